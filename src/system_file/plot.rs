@@ -103,35 +103,42 @@ impl LoadedSystem {
         from: &[String],
         functions: PlotFunctions<'_>,
     ) -> Result<PlotInput, FileError> {
-        let (values, parameters) = match at {
-            Some(at) => self.parameter_values(at)?,
-            None => (Values::new(), String::new()),
+        let (values, parameters, written_at) = match at {
+            Some(at) => {
+                let (values, parameters, written) = self.parameter_values(at)?;
+                (values, parameters, Some(written))
+            }
+            None => (Values::new(), String::new(), None),
         };
-        let starts: Vec<Vec<(Var, StartValue)>> = from
+        let given = Given {
+            values: &values,
+            at: written_at.as_ref(),
+        };
+        let starts: Vec<(Vec<(Var, StartValue)>, Written)> = from
             .iter()
-            .map(|point| self.starting_point(point, &values))
+            .map(|point| self.starting_point(point, given))
             .collect::<Result<_, _>>()?;
-        let hamiltonian = self.at_values("H", self.system.hamiltonian(), &values)?;
+        let hamiltonian = self.at_values("H", self.system.hamiltonian(), given)?;
         if let Some(why) = self.unset("H", &hamiltonian) {
             return Err(FileError::new(ErrorKind::Expression, COMMAND_LINE, why));
         }
-        for start in &starts {
-            if let Some(why) = self
+        for (start, written) in &starts {
+            if let Some(undefined) = self
                 .undefined_at("H", &hamiltonian, start)
                 .or_else(|| self.divides_by_zero_at("H", &hamiltonian, start, &values))
             {
-                return Err(FileError::new(ErrorKind::Condition, COMMAND_LINE, why));
+                return Err(undefined.placed(written, written_at.as_ref()));
             }
         }
         let mut real_curves = Vec::new();
         for src in functions.curves {
-            let (label, value, _) = self.drawable(src, &values)?;
-            for start in &starts {
-                if let Some(why) = self
+            let (label, value, _) = self.drawable(src, given)?;
+            for (start, written) in &starts {
+                if let Some(undefined) = self
                     .undefined_at(&label, &value, start)
                     .or_else(|| self.divides_by_zero_at(&label, &value, start, &values))
                 {
-                    return Err(FileError::new(ErrorKind::Condition, COMMAND_LINE, why));
+                    return Err(undefined.placed(written, written_at.as_ref()));
                 }
             }
             if value.is_real() {
@@ -149,7 +156,7 @@ impl LoadedSystem {
         }
         let real = |option: &str, src: Option<&str>| match src {
             None => Ok(None),
-            Some(src) => self.real_drawable(option, src, &values).map(Some),
+            Some(src) => self.real_drawable(option, src, given).map(Some),
         };
         let vars = self.system.vars();
         let angle = functions
@@ -165,7 +172,7 @@ impl LoadedSystem {
             parameters,
             values,
             hamiltonian,
-            starts,
+            starts: starts.into_iter().map(|(start, _)| start).collect(),
             curves: real_curves,
             against,
             section,
@@ -178,9 +185,9 @@ impl LoadedSystem {
         &self,
         option: &str,
         src: &str,
-        values: &Values,
+        given: Given<'_>,
     ) -> Result<(String, Expr), FileError> {
-        let (label, value, arg) = self.drawable(src, values)?;
+        let (label, value, arg) = self.drawable(src, given)?;
         if !value.is_real() {
             let why =
                 format!("{option} takes a real function; {label} is not: take re(…) or im(…)");
@@ -192,8 +199,9 @@ impl LoadedSystem {
         Ok((label, value))
     }
 
-    /// `--at`: each parameter named a real number. The substitution, and how it reads.
-    fn parameter_values(&self, at: &str) -> Result<(Values, String), FileError> {
+    /// `--at`: each parameter named a real number. The substitution, how it reads, and where
+    /// each value is written.
+    fn parameter_values(&self, at: &str) -> Result<(Values, String, Written), FileError> {
         let form = AssignmentForm {
             what: "a value of --at",
             kinds: "a parameter",
@@ -215,7 +223,9 @@ impl LoadedSystem {
         let (source, assignments) = self.assignments(at, &form, admit)?;
         let mut values = Values::new();
         let mut shown = Vec::new();
+        let mut written = Written::of(&source);
         for a in assignments {
+            written.values.push((a.var, a.rhs.clone()));
             let why = "the value of a parameter is a real number, such as 3/2";
             let value = number(&a.value, &a.rhs, &source, why)?;
             let value = Expr::constant(self.system.vars(), GaussianRational::from(value));
@@ -223,22 +233,23 @@ impl LoadedSystem {
             // H's divisor set to 0 is shown where --at writes it (a curve's or a starting
             // value's, found later, by the values alone).
             let this = &values[values.len() - 1..];
-            if let Some(why) = self.divisor_set_to_zero("H", self.system.hamiltonian(), this) {
+            if let Some((v, why)) = self.divisor_set_to_zero("H", self.system.hamiltonian(), this) {
                 let span = a.rhs.trimmed_span();
-                return Err(a.rhs.error(&source, ErrorKind::Condition, span, why));
+                let refusal = a.rhs.error(&source, ErrorKind::Condition, span, why);
+                return Err(refusal.with_hint(self.other_than_zero(v)));
             }
             shown.push(a.shown);
         }
-        Ok((values, shown.join(", ")))
+        Ok((values, shown.join(", "), written))
     }
 
     /// `--from`: a real number for every coordinate, angle, momentum and Poisson variable, once the parameters
-    /// have their `values`; in the phase space's order.
+    /// have their values (`given`); in the phase space's order, with where each is written.
     fn starting_point(
         &self,
         from: &str,
-        values: &Values,
-    ) -> Result<Vec<(Var, StartValue)>, FileError> {
+        given: Given<'_>,
+    ) -> Result<(Vec<(Var, StartValue)>, Written), FileError> {
         let form = AssignmentForm {
             what: "a value of --from",
             kinds: "a coordinate, an angle or a momentum",
@@ -257,8 +268,11 @@ impl LoadedSystem {
             })
         };
         let (source, assignments) = self.assignments(from, &form, admit)?;
-        let mut given = Vec::new();
+        let values = given.values;
+        let mut written = Written::of(&source);
+        let mut set = Vec::new();
         for a in assignments {
+            written.values.push((a.var, a.rhs.clone()));
             let why = format!(
                 "the starting value of {} must be a real number once the parameters have their \
                  values (--at)",
@@ -266,17 +280,18 @@ impl LoadedSystem {
             );
             let what = format!("the starting value of {}", self.display(a.var));
             // Shown where it is written in --from.
-            if let Some(why) = self.divisor_set_to_zero(&what, &a.value, values) {
+            if let Some((v, why)) = self.divisor_set_to_zero(&what, &a.value, values) {
                 let span = a.rhs.trimmed_span();
-                return Err(a.rhs.error(&source, ErrorKind::Condition, span, why));
+                let refusal = a.rhs.error(&source, ErrorKind::Condition, span, why);
+                return Err(refusal.with_hint(self.other_than_zero(v)));
             }
             let value = number(
-                &self.at_values(&what, &a.value, values)?,
+                &self.at_values(&what, &a.value, given)?,
                 &a.rhs,
                 &source,
                 why,
             )?;
-            given.push((
+            set.push((
                 a.var,
                 match a.pi_times {
                     true => StartValue::PiTimes(value),
@@ -287,7 +302,7 @@ impl LoadedSystem {
         let phase = self.system.space().coordinates();
         let (mut start, mut missing) = (Vec::new(), Vec::new());
         for v in phase {
-            match given.iter().find(|(g, _)| *g == v) {
+            match set.iter().find(|(g, _)| *g == v) {
                 Some(found) => start.push(found.clone()),
                 None => missing.push(self.display(v)),
             }
@@ -309,13 +324,13 @@ impl LoadedSystem {
                 ),
             ));
         }
-        Ok(start)
+        Ok((start, written))
     }
 
     /// Why `e` has no value at the starting point `start`, if it has none: it divides by a
     /// coordinate or momentum that starts at 0 (the flow of `H` would start at a singularity,
     /// and floating point would only say later that it left the finite numbers).
-    fn undefined_at(&self, what: &str, e: &Expr, start: &[(Var, StartValue)]) -> Option<String> {
+    fn undefined_at(&self, what: &str, e: &Expr, start: &[(Var, StartValue)]) -> Option<Undefined> {
         // An angle's negative exponents are those of `e^{−ikθ}`, defined everywhere.
         let vars = self.system.vars();
         let (v, _) = start.iter().find(|(v, value)| {
@@ -324,10 +339,15 @@ impl LoadedSystem {
                 && e.low_degree(*v).is_some_and(|low| low < 0)
         })?;
         let name = self.display(*v);
-        Some(format!(
-            "{what} is not defined at the starting point: it divides by {name}, which starts at 0 \
-             (--from)"
-        ))
+        Some(Undefined {
+            why: format!(
+                "{what} is not defined at the starting point: it divides by {name}, which starts \
+                 at 0 (--from)"
+            ),
+            hint: format!("start {name} at a value other than 0"),
+            by: vec![*v],
+            in_at: false,
+        })
     }
 
     /// Why `e` has no value at the starting point `start`, if it has none: it divides by a
@@ -342,7 +362,7 @@ impl LoadedSystem {
         e: &Expr,
         start: &[(Var, StartValue)],
         values: &Values,
-    ) -> Option<String> {
+    ) -> Option<Undefined> {
         let space = self.system.space();
         let vars = self.system.vars();
         let mut point = values.clone();
@@ -370,19 +390,26 @@ impl LoadedSystem {
         let by_parameters =
             |d: &Expr| !values.is_empty() && d.subst_many(values).is_ok_and(|at| at.is_constant());
         let place = |d: &Expr| match by_parameters(d) {
-            true => ("at the values of --at", "--at"),
-            false => ("at the starting point", "--from"),
+            true => ("at the values of --at", "--at", true),
+            false => ("at the starting point", "--from", false),
         };
+        // Shown at the value of a variable of `d` where that list writes it.
+        let by = |d: &Expr| d.vars().vars().filter(|&v| d.contains(v)).collect();
         if let Some((v, d)) = space
             .denominator_atoms()
             .iter()
             .find(|(v, d)| e.low_degree(*v).is_some_and(|low| low < 0) && vanishes(d) == Some(true))
         {
-            let (at, option) = place(d);
-            return Some(format!(
-                "{what} is not defined {at}: it divides by {}, which is 0 there ({option})",
-                self.display(*v)
-            ));
+            let (at, option, in_at) = place(d);
+            let name = self.display(*v);
+            return Some(Undefined {
+                why: format!(
+                    "{what} is not defined {at}: it divides by {name}, which is 0 there ({option})"
+                ),
+                hint: format!("give {option} values at which {name} is not 0"),
+                by: by(d),
+                in_at,
+            });
         }
         // A radical is real where its radicand is not negative, and divides where it is not 0.
         let (r, radicand, value) = space.radicals().iter().find_map(|(r, radicand)| {
@@ -391,19 +418,28 @@ impl LoadedSystem {
             let divides = value.is_zero() && e.low_degree(*r).is_some_and(|low| low < 0);
             (e.contains(*r) && (negative || divides)).then_some((r, radicand, value))
         })?;
-        let (at, option) = place(radicand);
-        Some(format!(
-            "{what} is not defined {at}: {} is the root of {value} there ({option})",
-            Expr::radical_definition(*r, radicand)
-        ))
+        let (at, option, in_at) = place(radicand);
+        let root = self.display(*r);
+        Some(Undefined {
+            hint: match value.is_zero() {
+                true => format!("give {option} values at which {root} is not 0"),
+                false => format!("give {option} values at which {radicand} is not negative"),
+            },
+            why: format!(
+                "{what} is not defined {at}: {} is the root of {value} there ({option})",
+                Expr::radical_definition(*r, radicand)
+            ),
+            by: by(radicand),
+            in_at,
+        })
     }
 
     /// A curve (or what curves are drawn against) given on the command line: its label and
     /// value at the parameters' `values`, which must leave no parameter in it.
-    fn drawable(&self, src: &str, values: &Values) -> Result<(String, Expr, Argument), FileError> {
+    fn drawable(&self, src: &str, given: Given<'_>) -> Result<(String, Expr, Argument), FileError> {
         let arg = self.argument(src)?;
         let (label, value) = self.expand(&arg)?;
-        let value = self.at_values(&format!("'{}'", src.trim()), &value, values)?;
+        let value = self.at_values(&format!("'{}'", src.trim()), &value, given)?;
         if let Some(why) = self.unset(&format!("'{}'", src.trim()), &value) {
             let whole = Span::new(0, arg.text.value.len());
             return Err(arg
@@ -449,24 +485,110 @@ impl LoadedSystem {
     }
 
     /// Why `what`, the function `e`, has no value at the parameters' `values`, if it has
-    /// none: they set a parameter it divides by to 0 ([`brackets::Condition::sets_a_divisor_to_zero`]).
-    fn divisor_set_to_zero(&self, what: &str, e: &Expr, values: &[(Var, Expr)]) -> Option<String> {
+    /// none: they set a parameter it divides by to 0 ([`brackets::Condition::sets_a_divisor_to_zero`]),
+    /// which is given with the message.
+    fn divisor_set_to_zero(
+        &self,
+        what: &str,
+        e: &Expr,
+        values: &[(Var, Expr)],
+    ) -> Option<(Var, String)> {
         brackets::Condition::sets_a_divisor_to_zero(values, e).map(|v| {
             let name = self.display(v);
-            format!("--at sets {name} = 0, but {what} divides by {name}")
+            (
+                v,
+                format!("--at sets {name} = 0, but {what} divides by {name}"),
+            )
         })
     }
 
-    /// `what`, the function `e`, at the parameters' `values`.
-    fn at_values(&self, what: &str, e: &Expr, values: &Values) -> Result<Expr, FileError> {
-        if let Some(why) = self.divisor_set_to_zero(what, e, values) {
-            return Err(FileError::new(ErrorKind::Condition, COMMAND_LINE, why));
+    /// What to do about a parameter `v` that `--at` sets to 0 and a function divides by.
+    fn other_than_zero(&self, v: Var) -> String {
+        format!("give {} a value other than 0 with --at", self.display(v))
+    }
+
+    /// `what`, the function `e`, at the parameters' values (`given`); where they set to 0 a
+    /// parameter it divides by, refused at that value in `--at`.
+    fn at_values(&self, what: &str, e: &Expr, given: Given<'_>) -> Result<Expr, FileError> {
+        let values = given.values;
+        if let Some((v, why)) = self.divisor_set_to_zero(what, e, values) {
+            let refusal = match given.at {
+                Some(at) => at.refusal(&[v], why),
+                None => FileError::new(ErrorKind::Condition, COMMAND_LINE, why),
+            };
+            return Err(refusal.with_hint(self.other_than_zero(v)));
         }
         e.subst_many(values).map_err(|err| {
             let mut error = self.computation_error(&EngineError::from(err));
             error.message = format!("{what} at the values of --at: {}", error.message);
             error
         })
+    }
+}
+
+/// The parameters' values of a plot, with where `--at` writes each (`None` without `--at`).
+#[derive(Clone, Copy)]
+struct Given<'a> {
+    /// The values, as a substitution.
+    values: &'a Values,
+    /// Where `--at` writes them.
+    at: Option<&'a Written>,
+}
+
+/// A list of `variable = value` given on the command line (`--at`, one `--from`): its text
+/// and where each variable's value is written in it, so that a refusal found after the list
+/// was read is shown there, with a caret.
+struct Written {
+    /// The list's text.
+    source: Source,
+    /// Each variable with its value's text, in the order written.
+    values: Vec<(Var, Text)>,
+}
+
+impl Written {
+    /// A list of `source` whose values are pushed as they are read.
+    fn of(source: &Source) -> Self {
+        Written {
+            source: source.clone(),
+            values: Vec::new(),
+        }
+    }
+
+    /// The refusal `why`, at the value of the last written of `vars` (where several make a
+    /// function undefined together, the one whose value completes it); without a place
+    /// where the list gives none of them.
+    fn refusal(&self, vars: &[Var], why: String) -> FileError {
+        match self.values.iter().rev().find(|(v, _)| vars.contains(v)) {
+            Some((_, rhs)) => {
+                rhs.error(&self.source, ErrorKind::Condition, rhs.trimmed_span(), why)
+            }
+            None => FileError::new(ErrorKind::Condition, COMMAND_LINE, why),
+        }
+    }
+}
+
+/// Why a function has no value where a plot starts: the message, the variables whose values
+/// make it so, and whether `--at` (the parameters' values alone) or `--from` writes them.
+struct Undefined {
+    /// What is wrong.
+    why: String,
+    /// What to do about it.
+    hint: String,
+    /// The variables at fault.
+    by: Vec<Var>,
+    /// Whether they are the parameters of `--at`.
+    in_at: bool,
+}
+
+impl Undefined {
+    /// The refusal, at the value of the variable at fault in `--from` (`from`) or `--at`
+    /// (`at`), as its message names.
+    fn placed(self, from: &Written, at: Option<&Written>) -> FileError {
+        let refusal = match (self.in_at, at) {
+            (true, Some(at)) => at.refusal(&self.by, self.why),
+            _ => from.refusal(&self.by, self.why),
+        };
+        refusal.with_hint(self.hint)
     }
 }
 

@@ -3289,11 +3289,12 @@ fn cli_plot_bad_arguments_exit_2_with_a_message() {
         ),
         // A parameter set to 0 that H, a curve or a starting value divides by is named, as
         // --when's condition names it; it was 'H at the values of --at: division by zero'. H's
-        // divisor is underlined in --at, a starting value's in --from.
+        // divisor and a curve's (which had no place) are underlined in --at, a starting
+        // value's in --from, each with what to do.
         (
             vec!["L", "--at", "M = 0, omega = 1, I = 1", "--from", full],
             "<command line>:1:5: --at sets M = 0, but H divides by M\n 1 | M = 0, omega = 1, \
-             I = 1\n   |     ^\n",
+             I = 1\n   |     ^\nhint: give M a value other than 0 with --at",
         ),
         (
             vec![
@@ -3308,7 +3309,8 @@ fn cli_plot_bad_arguments_exit_2_with_a_message() {
         ),
         (
             vec!["L/omega", "--at", "M = 1, omega = 0, I = 1", "--from", full],
-            "<command line>: --at sets ω = 0, but 'L/omega' divides by ω",
+            "<command line>:1:16: --at sets ω = 0, but 'L/omega' divides by ω\n 1 | M = 1, \
+             omega = 0, I = 1\n   |                ^\nhint: give ω a value other than 0 with --at",
         ),
         (
             vec![
@@ -3405,7 +3407,9 @@ fn cli_plot_bad_arguments_exit_2_with_a_message() {
             "-o",
             out,
         ],
-        "L/x is not defined at the starting point: it divides by x, which starts at 0 (--from)",
+        "<command line>:1:5: L/x is not defined at the starting point: it divides by x, which \
+         starts at 0 (--from)\n 1 | x = 0, y = 1, theta = 0, p_x = 0, p_y = 1/2, p_theta = 1\n   \
+         |     ^\nhint: start x at a value other than 0",
     );
     assert_bad_usage(
         &[
@@ -3421,7 +3425,9 @@ fn cli_plot_bad_arguments_exit_2_with_a_message() {
             "-o",
             out,
         ],
-        "H is not defined at the starting point: it divides by y, which starts at 0 (--from)",
+        "<command line>:1:12: H is not defined at the starting point: it divides by y, which \
+         starts at 0 (--from)\n 1 | x = 1, y = 0, p_x = 0, p_y = 1\n   |            ^\nhint: \
+         start y at a value other than 0",
     );
 }
 
@@ -3451,21 +3457,26 @@ fn cli_plot_blames_at_for_what_the_parameters_decide() {
         "blame-from.toml",
         &format!("{header}denominators = [\"x - a\"]\n").replace("x^2*D", "1/(x - a)"),
     );
+    // Each is shown at the value that makes it so, in --at (b's, which completes a − b) or in
+    // --from (x's), with what to do; they had no place.
     for (file, message) in [
         (
             &denominator,
-            "<command line>: H is not defined at the values of --at: it divides by (a − b), \
-             which is 0 there (--at)",
+            "<command line>:1:12: H is not defined at the values of --at: it divides by (a − b), \
+             which is 0 there (--at)\n 1 | a = 2, b = 2\n   |            ^\nhint: give --at \
+             values at which (a − b) is not 0",
         ),
         (
             &radical,
-            "<command line>: H is not defined at the values of --at: r = √(a − b − 1) is the \
-             root of -1 there (--at)",
+            "<command line>:1:12: H is not defined at the values of --at: r = √(a − b − 1) is \
+             the root of -1 there (--at)\n 1 | a = 2, b = 2\n   |            ^\nhint: give --at \
+             values at which a − b − 1 is not negative",
         ),
         (
             &on_x,
-            "<command line>: H is not defined at the starting point: it divides by (x − a), \
-             which is 0 there (--from)",
+            "<command line>:1:5: H is not defined at the starting point: it divides by (x − a), \
+             which is 0 there (--from)\n 1 | x = 2, p_x = 0\n   |     ^\nhint: give --from \
+             values at which (x − a) is not 0",
         ),
     ] {
         let file = file.to_str().unwrap();
