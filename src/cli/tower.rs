@@ -143,7 +143,11 @@ pub fn run(job: &TowerJob) -> anyhow::Result<bool> {
         }
         SystemArg::File(path) => {
             let file = load_system(path, &job.limits.unwrap_or_else(memory_only))?;
-            let when = job.when.as_deref().map(|w| file.condition(w)).transpose();
+            // Refused at its value in --when where the tower cannot be checked at it.
+            let family = job.family.as_deref();
+            let when = (job.when.as_deref())
+                .map(|w| file.tower_condition(w, family))
+                .transpose();
             let report = when.and_then(|when| {
                 family_tower_report_with_progress(
                     &file,

@@ -17,10 +17,10 @@ use trigpoly::Expr;
 
 use brackets::{Condition, EngineError};
 
-use super::claims::engine_error;
+use super::claims::{engine_error, parse_condition_with};
 use super::error::{ErrorKind, FileError};
 use super::scope::{substitute, Scope};
-use super::text::{comma_pieces, trimmed};
+use super::text::{comma_pieces, trimmed, Text};
 use super::{Caller, LoadedSystem};
 use crate::report::{
     first_free, listed, ClaimResult, Entry, Fact, ProofResult, Report, Section, SummaryKind,
@@ -482,12 +482,20 @@ pub fn family_tower_report_with_progress(
 ) -> Result<Report, FileError> {
     refuse_atoms(file)?;
     let start = Instant::now();
-    refuse_phase_condition(file, when)?;
+    if let Some(c) = when {
+        refuse_parameters_condition(file, c).map_err(|e| unplaced_refusal(file, &e))?;
+    }
     // Every family is shown, and so found to have an eigenvalue, before any bracket is formed.
     let families = tower_families(file, family)?
         .into_iter()
         .map(|k| ShownFamily::of(file, k))
         .collect::<Result<Vec<_>, _>>()?;
+    if let Some(c) = when {
+        let ks: Vec<usize> = families.iter().map(|f| f.index).collect();
+        let sides = family_sides(file, &ks)?;
+        let sides: Vec<&Expr> = sides.iter().collect();
+        (c.defined_on(&sides, "the tower")).map_err(|e| unplaced_refusal(file, &e))?;
+    }
     // The brackets are counted over every family's together.
     let per_family = pairs(max);
     let total = per_family.saturating_mul(families.len());
@@ -663,26 +671,80 @@ impl ShownFamily {
     }
 }
 
-/// Refuses a tower's condition that sets a variable of phase space: the tower's brackets are
-/// identities on the whole phase space, so a condition may set parameters only (substituting
-/// them commutes with the bracket, so the lemma holds at their values as it does everywhere).
-fn refuse_phase_condition(file: &LoadedSystem, when: Option<&Condition>) -> Result<(), FileError> {
-    if let Some((v, kind)) = when.and_then(|c| c.phase_variable()) {
+/// Refuses a tower's condition that sets a variable of phase space, as an
+/// [`EngineError::RefusedCondition`] at the variable it sets there (`M` of `M = p_x`): the
+/// tower's brackets are identities on the whole phase space, so a condition may set
+/// parameters only (substituting them commutes with the bracket, so the lemma holds at their
+/// values as it does everywhere); and one that sets to 0 a parameter `H` divides by, as a
+/// search's is ([`Condition::defined_on`]).
+fn refuse_parameters_condition(file: &LoadedSystem, c: &Condition) -> Result<(), EngineError> {
+    if let Some((set, v, kind)) = c.phase_variable() {
         let option = match file.caller {
             Caller::CommandLine => "--when: ",
             Caller::Program => "",
         };
-        return Err(FileError::new(
-            ErrorKind::Condition,
-            &file.given("<condition>", "").origin,
-            format!(
+        return Err(EngineError::RefusedCondition {
+            var: set,
+            message: format!(
                 "{option}a tower's condition may set parameters only, to numbers or other \
                  parameters, and it holds {v}, {kind}: the tower's brackets are identities on \
                  the whole phase space"
             ),
-        ));
+        });
     }
-    Ok(())
+    c.defined_on(&[file.system.hamiltonian()], "the Hamiltonian")
+}
+
+/// What the towers of the families `ks` (each with an eigenvalue) are formed from, which a
+/// condition must not make divide by zero: each family's instance `K_{1,1}` and its
+/// eigenvalues `λ(1, 0)` and `λ(0, 1)`.
+fn family_sides(file: &LoadedSystem, ks: &[usize]) -> Result<Vec<Expr>, FileError> {
+    let mut sides = Vec::new();
+    for &k in ks {
+        sides.push(file.compute_instance(k, 1, 1)?);
+        sides.push(file.eigenvalue_at(k, 1, 0)?);
+        sides.push(file.eigenvalue_at(k, 0, 1)?);
+    }
+    Ok(sides)
+}
+
+/// A refusal of a tower's condition given without its text (a program's
+/// [`Condition`]), which has no place to show it at: named `<condition>`.
+fn unplaced_refusal(file: &LoadedSystem, e: &EngineError) -> FileError {
+    let origin = file.given("<condition>", "").origin;
+    FileError::new(ErrorKind::Condition, &origin, e.to_string())
+}
+
+impl LoadedSystem {
+    /// A tower's condition given as text (`w0sq = 2*omega_c^2`), read as
+    /// [`LoadedSystem::condition`] reads one, and refused, at the value at fault, where
+    /// [`family_tower_report`] would refuse it at no place: where it sets a variable of phase
+    /// space or sets a parameter to one, or sets to 0 a parameter that `H` divides by, or one
+    /// that a family the tower checks divides by (`family`, as the report names them; a
+    /// refusal of the system or of the names is the report's own, said after the
+    /// condition's).
+    pub fn tower_condition(
+        &self,
+        text: &str,
+        family: Option<&str>,
+    ) -> Result<Condition, FileError> {
+        let source = self.given("<condition>", text);
+        let pieces = Text::whole(&source).split(',');
+        let condition = parse_condition_with(self, &source, &pieces, |c| {
+            refuse_parameters_condition(self, c)
+        })?;
+        refuse_atoms(self)?;
+        let ks = tower_families(self, family)?;
+        for &k in &ks {
+            ShownFamily::of(self, k)?;
+        }
+        let sides = family_sides(self, &ks)?;
+        let sides: Vec<&Expr> = sides.iter().collect();
+        match condition.defined_on(&sides, "the tower") {
+            Ok(()) => Ok(condition),
+            Err(e) => Err(self.condition_refusal(text, &e)),
+        }
+    }
 }
 
 /// The indices of the families whose towers are checked, in order: those named in `family`

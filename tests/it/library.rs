@@ -1146,6 +1146,32 @@ fn report_errors_name_the_program_not_the_command_line() {
     let err = family_tower_report(&towered, Some("R"), 2, Some(&on_phase_space)).unwrap_err();
     assert_eq!(err.origin, "<condition>");
     assert!(cli_words(&err).contains("a tower's condition may set parameters only"));
+    // Read from its text, the same refusal is shown at its value there.
+    let err = towered
+        .tower_condition("p_phi = J*k", Some("R"))
+        .unwrap_err();
+    assert!(
+        cli_words(&err).starts_with("<condition>:1:9: a tower's condition may set parameters"),
+        "{err}"
+    );
+    // At J = 0, where H divides by J, the tower was checked and proved; given without its
+    // text, the refusal has no place, with its text, it is at the value.
+    let at_zero = towered.condition("J = 0").unwrap();
+    let err = family_tower_report(&towered, Some("R"), 2, Some(&at_zero)).unwrap_err();
+    let divides = "the condition sets J = 0, but the Hamiltonian divides by J";
+    assert_eq!(
+        (err.origin.as_str(), err.location.is_none()),
+        ("<condition>", true)
+    );
+    assert!(
+        cli_words(&err).starts_with(&format!("<condition>: {divides}")),
+        "{err}"
+    );
+    let err = towered.tower_condition("J = 0", Some("R")).unwrap_err();
+    assert!(
+        cli_words(&err).starts_with(&format!("<condition>:1:5: {divides}")),
+        "{err}"
+    );
 
     // The command line's words, when the caller says so.
     assert_eq!(rotor.caller(), Caller::Program);

@@ -2330,6 +2330,56 @@ fn tower_at_values_of_parameters() {
     );
 }
 
+/// `tower --when` refuses a condition at the value in `--when` that makes it fail: one that
+/// sets a phase variable, or a parameter to one (it had no place), one that sets to 0 a
+/// parameter `H` divides by (it was checked at `M = 0` and exited 0, the tower's brackets
+/// holding no `1/M`), and one that sets to 0 a parameter a family divides by (it was shown at
+/// the family's `name = "K"` in the file).
+#[test]
+fn tower_refuses_a_condition_at_its_value_in_when() {
+    let dir = scratch("tower-when-placed");
+    let file = "hamiltonian = \"p_x^2/(2*M) + a*x^2/2\"\n[phase_space]\ncoordinates = [\"x\"]\n\
+                parameters = [\"a\", \"M\", \"c\"]\n[[family]]\nname = \"K\"\n\
+                value = \"(p_x + i*x)^m*(p_x - i*x)^n/c\"\neigenvalue = \"i*(m - n)\"\n";
+    std::fs::write(dir.join("a.toml"), file).expect("write");
+    let phase = "a tower's condition may set parameters only, to numbers or other parameters, \
+                 and it holds";
+    for (when, message) in [
+        (
+            "x = 0",
+            format!("<command line>:1:5: --when: {phase} x, a coordinate"),
+        ),
+        (
+            "a = 1, M = p_x",
+            format!("<command line>:1:12: --when: {phase} p_x, a momentum"),
+        ),
+        (
+            "a = 1, M = 0",
+            "<command line>:1:12: the condition sets M = 0, but the Hamiltonian divides by M: \
+             give M a value other than 0, or leave it free\n 1 | a = 1, M = 0\n   |            ^"
+                .to_string(),
+        ),
+        (
+            "c = 0, a = 1",
+            "<command line>:1:5: the condition sets c = 0, but the tower divides by c: give c a \
+             value other than 0, or leave it free\n 1 | c = 0, a = 1\n   |     ^"
+                .to_string(),
+        ),
+    ] {
+        let o = superint_in(
+            &dir,
+            &["tower", "--system", "a.toml", "--max", "2", "--when", when],
+        );
+        assert_eq!(o.status.code(), Some(2), "{when}: {}", text(&o.stdout));
+        assert!(
+            text(&o.stderr).contains(&message),
+            "{when}: {}",
+            text(&o.stderr)
+        );
+        assert!(!text(&o.stderr).contains("panicked"), "{}", text(&o.stderr));
+    }
+}
+
 /// Every family of a file with an eigenvalue has its tower checked, each in its own section:
 /// the harmonic rotor's `K_{m,n}` and `K̄_{m,n}` (it checked `K` alone), both expanded and
 /// proved for all `m, n`, four claims in all; `P` and `Q`, which declare no eigenvalue, are

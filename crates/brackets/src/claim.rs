@@ -281,9 +281,11 @@ impl Condition {
     }
 
     /// The first variable of phase space the condition sets or sets a parameter to, with its
-    /// kind in words (`("p_x", "a momentum")`); `None` when it sets parameters to numbers and
-    /// other parameters only, a substitution that commutes with every bracket.
-    pub fn phase_variable(&self) -> Option<(String, &'static str)> {
+    /// kind in words, after the variable the condition sets there, at whose value a caller
+    /// holding the condition's text shows it (`(M, "p_x", "a momentum")` of `M = p_x`); `None`
+    /// when it sets parameters to numbers and other parameters only, a substitution that
+    /// commutes with every bracket.
+    pub fn phase_variable(&self) -> Option<(Var, String, &'static str)> {
         self.subs.iter().find_map(|(v, value)| {
             let vars = value.vars();
             let phase = |w: &Var| vars.variable(*w).kind() != VarKind::Parameter;
@@ -292,7 +294,11 @@ impl Condition {
                 false => vars.vars().find(|w| phase(w) && value.contains(*w)),
             }?;
             let variable = vars.variable(w);
-            Some((variable.unicode().to_string(), variable.kind().described()))
+            Some((
+                *v,
+                variable.unicode().to_string(),
+                variable.kind().described(),
+            ))
         })
     }
 
