@@ -793,6 +793,19 @@ impl<'a> Builder<'a> {
             return Err(text.error(&self.source, ErrorKind::Expression, at, message));
         }
         let expr = scope.lower(&self.source, &text, &tree)?;
+        // The engine refuses it too (`PhaseSpace::with_brackets`), but at no place in the
+        // file: here it is shown at the value.
+        if !expr.is_free_of(VarKind::Denominator) {
+            return Err(text.error(
+                &self.source,
+                ErrorKind::Expression,
+                tree.span,
+                format!(
+                    "{{{ua}, {ub}}} = {} has a denominator: a declared bracket is a polynomial",
+                    expr.brief_excerpt()
+                ),
+            ));
+        }
         if expr.conj() != expr {
             return Err(text.error(
                 &self.source,

@@ -1924,6 +1924,20 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             "bad.toml:12:15: {M3, M1} = i M2 is not real",
             check.clone(),
         ),
+        // It was shown at the [poisson] header, the engine's refusal at no place.
+        (
+            "a declared bracket with a denominator",
+            TOP.replacen(
+                "parameters = [\"a\"]\n",
+                "parameters = [\"a\"]\ndenominators = [\"M1 - M2\"]\n",
+                1,
+            )
+            .replacen("\"{M3, M1}\" = \"M2\"", "\"{M3, M1}\" = \"M2/(M1 - M2)\"", 1)
+            .into_bytes(),
+            "bad.toml:13:15: {M3, M1} = M2/(M1 − M2) has a denominator: a declared bracket is a \
+             polynomial\n 13 | \"{M3, M1}\" = \"M2/(M1 - M2)\"\n    |               ^^^^^^^^^^^^",
+            check.clone(),
+        ),
         (
             "a declared bracket that is a bracket",
             top_with("\"{M3, M1}\" = \"{M1, M2}\""),
