@@ -3,7 +3,7 @@
 
 use crate::system_file::{
     assignment_sides, comma_pieces, condition_cannot_set, fixed_twice, no_variable, trimmed,
-    ErrorKind, FileError, Given, Limit, LimitSettings, CONDITION_FORM, CONDITION_USAGE,
+    ErrorKind, FileError, Given, Limit, LimitSettings, CONDITION_FORM, CONDITION_USAGE, FIX_ONCE,
 };
 use brackets::{EngineError, System};
 use trigpoly::{Expr, Limits, Rational, Style, Var};
@@ -305,7 +305,7 @@ pub fn parse_condition_checked(
             return Err(refuse(name_span, why));
         }
         if subs.iter().any(|(w, _)| *w == v) {
-            return Err(refuse(name_span, fixed_twice(name)));
+            return Err(refuse(name_span, fixed_twice(name)).with_hint(FIX_ONCE));
         }
         let expr = parse(value, value_span.start)?;
         // As a file's condition prints, the value as it is written, in the paper's notation

@@ -747,6 +747,9 @@ pub(crate) fn fixed_twice(typed: &str) -> String {
     format!("{} is fixed twice", trigpoly::quoted_name(typed))
 }
 
+/// What to do about a left side [`fixed_twice`], said as its error's hint.
+pub(crate) const FIX_ONCE: &str = "keep one of its values: a list of values sets each name once";
+
 /// What reading the `var = value` of a list takes: the file, the source of the texts, how
 /// the list reads, and the scope its values are read in.
 struct AssignmentReader<'a> {
@@ -802,7 +805,7 @@ impl AssignmentReader<'_> {
             return refuse(why);
         }
         if assignments.iter().any(|a| a.var == var) {
-            return refuse(fixed_twice(lhs.value.trim()));
+            return refuse(fixed_twice(lhs.value.trim())).map_err(|e| e.with_hint(FIX_ONCE));
         }
         Ok(var)
     }

@@ -120,6 +120,11 @@ pub struct Location {
     last: Option<Box<Location>>,
 }
 
+/// What to do about a text that divides by what reads as 0 (`1/0`), said as the hint of its
+/// error.
+const DIVIDED_BY_ZERO: &str =
+    "what is divided by here is 0: write a divisor other than 0, or leave the division out";
+
 /// A problem with a system file or a text given to it: kind, origin (the file's path; a text a
 /// program gave, `<expression>`, `<condition>`, `<function NAME>`, ...; `<command line>` for
 /// the command line's), location, message and an optional hint.
@@ -316,7 +321,16 @@ impl FileError {
                 hint: limit.hint(settings),
                 ..self
             },
-            None => self,
+            // A division by what reads as 0 (`1/0`, `x/(a - a)`) says what to do, as the
+            // other refusals of a text do.
+            None => match self.cause.as_deref() {
+                Some(trigpoly::ParseCause::Algebra(trigpoly::AlgebraError::DivisionByZero))
+                    if self.hint.is_none() =>
+                {
+                    self.with_hint(DIVIDED_BY_ZERO)
+                }
+                _ => self,
+            },
         }
     }
 

@@ -41,7 +41,7 @@
 mod claims;
 pub(crate) use claims::{
     assignment_sides, condition_cannot_set, decimal_number, fixed_twice, no_variable,
-    CONDITION_FORM,
+    CONDITION_FORM, FIX_ONCE,
 };
 mod code;
 mod error;

@@ -1598,7 +1598,17 @@ fn cli_rank_on_a_level_set() {
     assert!(resolved.contains("= 4 at p_θ = Iω, ω = 2"), "{resolved}");
     assert!(!resolved.contains("ω = 19/2"), "{resolved}");
     for (when, message) in [
-        ("x = p_x, x = 2", "1:10: 'x' is fixed twice"),
+        (
+            "x = p_x, x = 2",
+            "1:10: 'x' is fixed twice\n 1 | x = p_x, x = 2\n   |          ^\nhint: keep one of \
+             its values: a list of values sets each name once",
+        ),
+        // It said what but not what to do.
+        (
+            "x = 1/0",
+            "1:7: division by zero\n 1 | x = 1/0\n   |       ^\nhint: what is divided by here is \
+             0: write a divisor other than 0, or leave the division out",
+        ),
         (
             "p_x = 2*p_x",
             "1:7: the condition sets p_x in terms of itself",
@@ -2881,6 +2891,26 @@ fn assert_bad_usage(args: &[&str], message: &str) {
         "superint {args:?}: {}",
         stderr(&o)
     );
+}
+
+/// A built-in system's condition that fixes a name twice or divides by zero says what to do,
+/// as a file's does: both said only what was wrong.
+#[test]
+fn cli_a_builtin_systems_condition_says_what_to_do() {
+    for (when, message) in [
+        (
+            "M = 1, M = 2",
+            "<command line>:1:8: 'M' is fixed twice\n 1 | M = 1, M = 2\n   |        ^\nhint: \
+             keep one of its values: a list of values sets each name once",
+        ),
+        (
+            "x = 1/0",
+            "<command line>:1:7: division by zero\n 1 | x = 1/0\n   |       ^\nhint: what is \
+             divided by here is 0: write a divisor other than 0, or leave the division out",
+        ),
+    ] {
+        assert_bad_usage(&["search", "--system", "harmonic", "--when", when], message);
+    }
 }
 
 /// A built-in system (`--system`) is held to `--max-terms` and `--max-degree`, and by default

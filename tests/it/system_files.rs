@@ -1433,6 +1433,31 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             "bad.toml:14:22: the condition sets p_x to ix, which is not real",
             check.clone(),
         ),
+        // These two said what but not what to do.
+        (
+            "condition that fixes a variable twice",
+            base_with(
+                "claim = \"{A, H}",
+                "when = \"M = 1, M = 2\"\nclaim = \"{A, H}",
+            ),
+            "bad.toml:14:16: 'M' is fixed twice\n 14 | when = \"M = 1, M = 2\"\n    |                ^\n\
+             hint: keep one of its values: a list of values sets each name once",
+            check.clone(),
+        ),
+        (
+            "condition with a value that divides by zero",
+            base_with(
+                "claim = \"{A, H}",
+                "when = \"M = 1, x = 1/0\"\nclaim = \"{A, H}",
+            ),
+            concat!(
+                "bad.toml:14:22: division by zero\n 14 | when = \"M = 1, x = 1/0\"\n",
+                "    |                      ^\n",
+                "hint: what is divided by here is 0: write a divisor other than 0, or leave the \
+                 division out",
+            ),
+            check.clone(),
+        ),
         (
             "claim without =",
             base_with("{A, H} = i*omega*A", "{A, H}"),
