@@ -74,7 +74,8 @@ impl LevelSet {
 
     /// Refuses a level set the search cannot take: `expr` holding an angle, a negative power,
     /// a denominator or a radical, or no phase variable at all; `value` holding a phase
-    /// variable; a leading coefficient that is no number at the values `fixed` (parameters
+    /// variable; `P` not real (the normal forms of a real function modulo a complex `P` are
+    /// complex, and its real level set needs two equations); a leading coefficient that is no number at the values `fixed` (parameters
     /// named there are numbers); and a level set that the flow of `H` leaves, `{P, H}` not in
     /// `(P)`, decided by the remainder of its division by `P`, at every value of the
     /// parameters where the leading coefficient is a number for them, else at `fixed`.
@@ -124,6 +125,13 @@ impl LevelSet {
             ));
         }
         let p = self.polynomial()?;
+        if !p.is_real() {
+            return invalid(format!(
+                "the level set's polynomial P = {p} is not real (it differs from its \
+                 conjugate): its real level set is where its real and imaginary parts both \
+                 vanish, two equations, and --on takes one; write a real EXPR and VALUE"
+            ));
+        }
         let (p, at) = match p.leading_term(&order) {
             Ok(_) => (p, ""),
             Err(DivisionRefusal::LeadingCoefficient { .. }) => {
@@ -443,7 +451,8 @@ mod tests {
 
     /// What the search cannot take on a level set is refused with what is wrong: a level set
     /// the flow leaves (`M1`, `{M1, H} = −3 M2 M3`), an angle, a negative power, a constant, a
-    /// value of phase space, a parameter in the leading coefficient, and a condition besides.
+    /// value of phase space, a polynomial that is not real, a parameter in the leading
+    /// coefficient, and a condition besides.
     #[test]
     fn level_sets_the_search_cannot_take_are_refused() {
         let top = gc_top();
@@ -460,6 +469,10 @@ mod tests {
         assert!(refused("M1/gamma3", "0").contains("negative power of γ3"));
         assert!(refused("c", "1").contains("no variable of phase space"));
         assert!(refused("gamma1", "M1").contains("value holds M1"));
+        // A complex P: its real level set M1 = γ1 = 0 is two equations, not (P).
+        let m = refused("M1 + i*gamma1", "0");
+        assert!(m.contains("P = M1 + i γ1 is not real"), "{m}");
+        assert!(refused("M1*gamma1 + M2*gamma2 + M3*gamma3", "i").contains("is not real"));
         assert!(
             refused("c*M1*gamma1 + c*M2*gamma2 + c*M3*gamma3", "0").contains("holds a parameter")
         );
