@@ -280,6 +280,9 @@ pub struct LevelSetFacts {
     pub leading_monomial: String,
     /// The space's unknowns it divides, left out.
     pub left_out: usize,
+    /// A function of the space and its normal form, outside the space, in ASCII, where one
+    /// is ([`brackets::search::SearchedLevel::normal_form_outside`]).
+    pub normal_form_outside: Option<(String, String)>,
 }
 
 /// What `superint closure` found.

@@ -798,7 +798,9 @@ impl Shared {
             Entry::Equations(Equations::new(String::new(), vec![Equation::new("H", h)])),
             Entry::Text(space_text(r)),
         ];
-        entries.extend(r.on.as_ref().map(|on| Entry::Text(level_set_text(on))));
+        entries.extend(
+            (r.on.as_ref()).map(|on| Entry::Text(level_set_text(on, !r.parameters.is_empty()))),
+        );
         entries.extend(hamiltonian_note(system, options, self.caller)?);
         let for_every_value = (0..r.basis.len())
             .filter(|&i| r.for_every_value(i).is_some())
@@ -912,6 +914,12 @@ impl Shared {
                 polynomial: on.polynomial.render(Style::Ascii),
                 leading_monomial: on.leading_monomial.render(Style::Ascii),
                 left_out: on.left_out,
+                normal_form_outside: on.normal_form_outside.as_ref().map(|o| {
+                    (
+                        o.function.render(Style::Ascii),
+                        o.normal_form.render(Style::Ascii),
+                    )
+                }),
             }),
         })))
     }
@@ -1407,9 +1415,23 @@ fn level_set_shown(on: &SearchedLevel) -> String {
 }
 
 /// What a search on a level set does: the polynomial `P`, its leading monomial, the
-/// monomials left out, and what the integrals found are.
-fn level_set_text(on: &SearchedLevel) -> String {
-    format!(
+/// monomials left out, and what the integrals found are; where a function of the space has
+/// a normal form outside it (at the parameters' values, where they are `fixed`), that only
+/// those whose normal form lies in the space are found.
+fn level_set_text(on: &SearchedLevel, fixed: bool) -> String {
+    let outside = match &on.normal_form_outside {
+        Some(o) => format!(
+            " Only those whose normal form lies in the space are found: the space's degree \
+             bounds are not kept by the division (the normal form of `{}` is `{}`{}, outside \
+             the space), so an integral of the space whose normal form leaves it is not \
+             counted (a space that holds its normal form finds it).",
+            o.function,
+            o.normal_form,
+            if fixed { " at the fixed values" } else { "" },
+        ),
+        None => String::new(),
+    };
+    let text = format!(
         "On the level set `{}`, of `P = {}`, which the flow of `H` keeps (`{{P, H}}` is a \
          multiple of `P`): the monomials divisible by its leading monomial `{}` (graded \
          lexicographic order) are left out, {} (each is a combination of lower ones where \
@@ -1420,5 +1442,6 @@ fn level_set_text(on: &SearchedLevel) -> String {
         on.polynomial,
         on.leading_monomial,
         counted(on.left_out, "unknown"),
-    )
+    );
+    text + &outside
 }

@@ -104,7 +104,10 @@
 //!                   j, order k), "for_every_value": int,
 //!                   "shown": [ids], "new_only": { "known", "products", "generated" } | null,
 //!                   "level_set": { "text", "polynomial" (P = EXPR − VALUE, ASCII),
-//!                          "leading_monomial" (ASCII), "left_out": int (unknowns it divides) }
+//!                          "leading_monomial" (ASCII), "left_out": int (unknowns it divides),
+//!                          "normal_form_outside": { "function", "normal_form" } (ASCII: a
+//!                          function of the space whose normal form modulo P leaves it; only
+//!                          the integrals whose normal form lies in the space are found) | null }
 //!                          (only for `search --on`; each claim then reads `{I, H} = Q P`, its
 //!                          "ascii" the identity `{K, H} = (Q)*(P)`) } ],
 //!   "closures": [ { "section", "generators", "degree", "monomials", "rank", "parameters",
@@ -550,6 +553,9 @@ fn search(f: &SearchFacts, section: u32) -> Value {
                 "polynomial": l.polynomial,
                 "leading_monomial": l.leading_monomial,
                 "left_out": l.left_out,
+                "normal_form_outside": l.normal_form_outside.as_ref().map(|(function, normal_form)| {
+                    json!({ "function": function, "normal_form": normal_form })
+                }),
             }),
         );
     }

@@ -6,10 +6,15 @@
 //! `P` alone is a Gröbner basis of `(P)`: in a graded lexicographic order on the phase
 //! variables ([`DivisionOrder`]), with a number as the coefficient of its leading monomial
 //! `LM(P)`, the monomials that `LM(P)` does not divide span the normal forms modulo `(P)`. The
-//! space's monomials that it divides are left out (each is a lower combination modulo `P`, so
-//! nothing is lost), and each image `{φ, H}` is replaced by its remainder on division by `P`:
-//! the kernel is then exactly the normal forms `K` with `{K, H} ∈ (P)`, none of them in `(P)`
-//! (a nonzero normal form is not). Each integral is proved by the quotient `Q` of that
+//! space's monomials that it divides are left out (each is a lower combination modulo `P`),
+//! and each image `{φ, H}` is replaced by its remainder on division by `P`: the kernel is then
+//! exactly the normal forms `K` in the space with `{K, H} ∈ (P)`, none of them in `(P)` (a
+//! nonzero normal form is not). Nothing is lost where the division keeps the space's degree
+//! bounds (one total degree, the Poisson degree of a Lie–Poisson system): where it does not
+//! (momenta and positions bounded apart, `x²` replaced through `H = E` by momenta), a function
+//! of the space may have a normal form outside it, which the search says
+//! ([`NormalFormOutside`](super::NormalFormOutside)), and only the integrals whose normal form
+//! lies in the space are found. Each integral is proved by the quotient `Q` of that
 //! division: `{K, H} − P·Q = 0`, recomputed from the bracket and the product.
 
 use trigpoly::{Division, DivisionOrder, DivisionRefusal, Expr, Rational, Var, VarKind};
@@ -262,7 +267,7 @@ impl OnLevel {
 
 #[cfg(test)]
 mod tests {
-    use trigpoly::{Expr, Rational, Vars};
+    use trigpoly::{Expr, Rational, VarKind, Vars};
 
     use super::LevelSet;
     use crate::search::{search, SearchOptions, SearchResult, SearchSpace};
@@ -367,6 +372,8 @@ mod tests {
         assert_eq!(r.basis.len(), 4);
         assert_eq!(r.on.as_ref().unwrap().left_out, 7);
         assert_eq!(r.on.as_ref().unwrap().leading_monomial, e("M1*gamma1"));
+        // The division keeps the Poisson degree: every normal form lies in the space.
+        assert!(r.on.as_ref().unwrap().normal_form_outside.is_none());
         let everywhere = search(&top, &SearchOptions::new(space)).unwrap();
         assert!(everywhere.basis.iter().all(|f| f.poisson_degree < 3));
     }
@@ -426,6 +433,29 @@ mod tests {
         let lead = &r.on.as_ref().unwrap().leading_monomial;
         assert_eq!(lead, &e("x^2"));
         assert!(r.basis.iter().all(|f| f.proved_fixed));
+        // The momenta and positions degrees, bounded apart, are not kept by the division:
+        // x² replaced through H = E raises the momenta degree by 2, and a function of the
+        // space (x² p_x³, say) has a normal form of momenta degree 5, which is said.
+        let outside = r.on.as_ref().unwrap().normal_form_outside.as_ref();
+        let outside = outside.expect("a normal form outside the space");
+        let momenta = |f: &Expr| f.total_degree(&[VarKind::Momentum]).unwrap_or(0);
+        let positions = |f: &Expr| f.total_degree(&[VarKind::Coordinate]).unwrap_or(0);
+        assert!(momenta(&outside.function) <= 3 && positions(&outside.function) <= 3);
+        assert!(
+            momenta(&outside.normal_form) > 3 || positions(&outside.normal_form) > 3,
+            "{} → {}",
+            outside.function,
+            outside.normal_form
+        );
+        let at_one = [(vars.lookup("E").unwrap(), Rational::one())];
+        let divided = outside
+            .function
+            .divide_by(
+                &crate::search::fix_parameters(&energy.polynomial().unwrap(), &at_one).unwrap(),
+                &LevelSet::order(&oscillator),
+            )
+            .unwrap();
+        assert_eq!(divided.remainder, outside.normal_form);
         // Re(a² b̄) for a = p_x + ix, b = p_y + 2iy: (p_x² − x²) p_y + 4 x p_x y, whose normal
         // form modulo H − E replaces x² by 2E − p_x² − p_y² − 4y².
         let c = e("(p_x^2 - x^2)*p_y + 4*x*p_x*y");

@@ -112,8 +112,8 @@ pub use parameters::{fix_parameters, GENERIC_VALUES};
 pub(crate) use proof::is_phase_free;
 pub use proof::lift_and_prove;
 pub use result::{
-    parameter_text, Integral, NewIntegrals, ParameterModule, SearchResult, SearchTimings,
-    SearchedLevel, SpaceVariables,
+    parameter_text, Integral, NewIntegrals, NormalFormOutside, ParameterModule, SearchResult,
+    SearchTimings, SearchedLevel, SpaceVariables,
 };
 
 use rustc_hash::FxHashMap;
@@ -323,12 +323,13 @@ fn fixed_search_problem(
                 system.vars(),
                 [(trigpoly::GaussianRational::from(1), at.lead.clone())],
             )?;
-            let (problem, left_out) = problem.restricted_to(at)?;
+            let (problem, left_out, normal_form_outside) = problem.restricted_to(at)?;
             let searched = SearchedLevel {
                 level: level.clone(),
                 polynomial: level.polynomial()?,
                 leading_monomial,
                 left_out,
+                normal_form_outside,
             };
             (problem, Some(searched))
         }

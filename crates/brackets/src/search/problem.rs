@@ -15,7 +15,7 @@ use super::independence::independent_as_functions;
 use super::level_set::OnLevel;
 use super::options::SearchSpace;
 use super::parameters::fix_parameters;
-use super::result::SpaceVariables;
+use super::result::{NormalFormOutside, SpaceVariables};
 
 /// How many images `{φ, H}` are formed at a time on the pool's threads before they are numbered
 /// into equations: enough to share among threads, few enough to keep little in memory.
@@ -540,14 +540,36 @@ impl Problem {
 
     /// The problem on the level set `level`: the unknowns whose monomial its leading monomial
     /// divides left out (each is a combination of lower ones modulo its polynomial), and the
-    /// images taken modulo the polynomial; with how many unknowns were left out.
-    pub(super) fn restricted_to(mut self, level: OnLevel) -> Result<(Self, usize), EngineError> {
-        let before = self.unknowns.len();
+    /// images taken modulo the polynomial; with how many unknowns were left out, and the first
+    /// of them whose normal form has a monomial the space has not, with that normal form (the
+    /// space's degree bounds, separate for momenta and positions say, are not closed under the
+    /// division, and an integral of the space whose normal form leaves it is not found).
+    pub(super) fn restricted_to(
+        mut self,
+        level: OnLevel,
+    ) -> Result<(Self, usize, Option<NormalFormOutside>), EngineError> {
+        let left_out_functions: Vec<Expr> = (0..self.unknowns.len())
+            .filter(|&j| level.leaves_out(&self.unknowns[j].phase))
+            .map(|j| self.expr(j, &Rational::one()))
+            .collect::<Result<_, _>>()?;
         self.unknowns.retain(|u| !level.leaves_out(&u.phase));
-        let left_out = before - self.unknowns.len();
         self.slots = Problem::slots(&self.vars, &self.variables.angles, &self.unknowns)?;
+        let mut outside = None;
+        for function in left_out_functions.iter() {
+            let normal_form = level.remainder(function)?;
+            if normal_form
+                .terms()
+                .any(|t| self.slots.get_term(&t).is_none())
+            {
+                outside = Some(NormalFormOutside {
+                    function: function.clone(),
+                    normal_form,
+                });
+                break;
+            }
+        }
         self.level = Some(level);
-        Ok((self, left_out))
+        Ok((self, left_out_functions.len(), outside))
     }
 
     /// The unknown as a function.

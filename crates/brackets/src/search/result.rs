@@ -59,6 +59,21 @@ pub struct SearchedLevel {
     pub leading_monomial: Expr,
     /// The unknowns left out, those whose monomial `LM(P)` divides.
     pub left_out: usize,
+    /// A function of the space whose normal form modulo `P` leaves the space, where one does
+    /// (its degree bounds are not closed under the division: `x² p_x³`, of momenta degree
+    /// at most 3, has on `H = E` of the 1:2 oscillator a normal form with `p_x⁵`); the
+    /// integrals found are then those whose normal form lies in the space.
+    pub normal_form_outside: Option<NormalFormOutside>,
+}
+
+/// A function of a search's space and its normal form modulo a level set's polynomial, a
+/// function outside the space ([`SearchedLevel::normal_form_outside`]).
+#[derive(Clone, Debug)]
+pub struct NormalFormOutside {
+    /// The function of the space, `φ` or `φ cos k·θ`, at the fixed values.
+    pub function: Expr,
+    /// Its remainder on division by `P`, which has a monomial the space has not.
+    pub normal_form: Expr,
 }
 
 /// What `--new-only` found. Integrals are graded by their total degree in the coordinates and
