@@ -249,6 +249,30 @@ impl OnLevel {
         Ok(p_divide(f, &self.fixed, &self.order)?.remainder)
     }
 
+    /// Refuses the level set where `f`, a nonzero normal form found (at the fixed values), is
+    /// zero on it all the same: where a power `f^e` is a multiple of `P`, `P` has a repeated
+    /// factor (`A²` for `A = M·γ`, whose normal forms hold `A` itself) and the integrals found
+    /// would be counted modulo `(P)`, not as functions on the level set. Decided exactly: if
+    /// `P = Π fᵢ^{eᵢ}` and some power of `f` is a multiple of `P`, each `fᵢ` divides `f` and
+    /// `f^{max eᵢ}` is one, with `max eᵢ ≤ deg P`; the powers are taken modulo `P`.
+    pub(super) fn refuse_vanishing(&self, f: &Expr) -> Result<(), EngineError> {
+        let degree: i64 = self.lead.iter().sum();
+        let mut power = self.remainder(f)?;
+        for e in 2..=degree {
+            power = self.remainder(&power.checked_mul(f)?)?;
+            if power.is_zero() {
+                return Err(EngineError::Invalid(format!(
+                    "the level set's polynomial P = {} has a repeated factor: the function \
+                     {f} found, in normal form, is zero where P = 0 (its power {e} is a \
+                     multiple of P), so the functions on the level set are not the normal \
+                     forms modulo P; write each factor of P once (A = 0 for A^2 = 0)",
+                    self.fixed
+                )));
+            }
+        }
+        Ok(())
+    }
+
     /// The proof that `flow` lies in `(p)` (`p` is `P` at the fixed values or with its
     /// parameters, as `flow` is): the quotient `Q`, where the remainder is zero and
     /// `flow − p·Q`, recomputed, is zero; `None` where it is not.
@@ -481,8 +505,8 @@ mod tests {
 
     /// What the search cannot take on a level set is refused with what is wrong: a level set
     /// the flow leaves (`M1`, `{M1, H} = −3 M2 M3`), an angle, a negative power, a constant, a
-    /// value of phase space, a polynomial that is not real, a parameter in the leading
-    /// coefficient, and a condition besides.
+    /// value of phase space, a polynomial that is not real, a square, a parameter in the
+    /// leading coefficient, and a condition besides.
     #[test]
     fn level_sets_the_search_cannot_take_are_refused() {
         let top = gc_top();
@@ -503,6 +527,13 @@ mod tests {
         let m = refused("M1 + i*gamma1", "0");
         assert!(m.contains("P = M1 + i γ1 is not real"), "{m}");
         assert!(refused("M1*gamma1 + M2*gamma2 + M3*gamma3", "i").contains("is not real"));
+        // A square: M·γ, a normal form modulo (M·γ)², is zero on its level set, and would be
+        // counted an integral there.
+        let m = refused("(M1*gamma1 + M2*gamma2 + M3*gamma3)^2", "0");
+        assert!(
+            m.contains("has a repeated factor") && m.contains("its power 2"),
+            "{m}"
+        );
         assert!(
             refused("c*M1*gamma1 + c*M2*gamma2 + c*M3*gamma3", "0").contains("holds a parameter")
         );
