@@ -1963,6 +1963,30 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
              polynomial\n 13 | \"{M3, M1}\" = \"M2/(M1 - M2)\"\n    |               ^^^^^^^^^^^^",
             check.clone(),
         ),
+        // A negative power of a phase variable and a radical went on to the Jacobi check,
+        // whose message blamed the brackets at the key, not the value.
+        (
+            "a declared bracket with a negative power of a Poisson variable",
+            top_with("\"{M3, M1}\" = \"M2/M1\""),
+            "bad.toml:12:15: {M3, M1} = M2/M1 has a negative power of M1: a declared bracket is \
+             a polynomial\n 12 | \"{M3, M1}\" = \"M2/M1\"\n    |               ^^^^^\nhint: write \
+             it without dividing by M1",
+            check.clone(),
+        ),
+        (
+            "a declared bracket with a radical",
+            TOP.replacen(
+                "parameters = [\"a\"]\n",
+                "parameters = [\"a\"]\nradicals = { r = \"x^2 + 1\" }\n",
+                1,
+            )
+            .replacen("\"{M3, M1}\" = \"M2\"", "\"{M3, M1}\" = \"M2*r\"", 1)
+            .into_bytes(),
+            "bad.toml:13:15: {M3, M1} = M2 r has the radical r: a declared bracket is a \
+             polynomial\n 13 | \"{M3, M1}\" = \"M2*r\"\n    |               ^^^^\nhint: write it \
+             in the variables without r",
+            check.clone(),
+        ),
         (
             "a declared bracket that is a bracket",
             top_with("\"{M3, M1}\" = \"{M1, M2}\""),
