@@ -233,8 +233,11 @@ fn symbols_text(c: &Closure) -> Option<Entry> {
 /// ring's message says to raise it or lower the degree, as [`closure_report_for`]'s does, a
 /// program's limits named `LimitsOverride::max_terms`, as the loader takes them, or
 /// `Limits::max_terms` for a system built in code, [`LoadedSystem::of_system`]) or `Engine`,
-/// as [`table_report`](crate::system_file::table_report)'s are. `caller` chooses whose
-/// options the report's advice names, as for [`closure_report_for`].
+/// as [`table_report`](crate::system_file::table_report)'s are, the engine's error kept
+/// ([`FileError::engine`]): a refusal of the condition
+/// ([`EngineError::RefusedCondition`], `M = 0` where a generator divides by `M`) is placed in
+/// the condition's text by [`LoadedSystem::condition_refusal`], as a search's is. `caller`
+/// chooses whose options the report's advice names, as for [`closure_report_for`].
 ///
 /// ```
 /// use superint::discovery::relation_text;

@@ -113,12 +113,16 @@ fn engine_error_under(
     settings: LimitSettings,
 ) -> FileError {
     let message = e.to_string();
-    match Limit::of_engine(e) {
+    let err = match Limit::of_engine(e) {
         Some(limit) => FileError {
             hint: limit.hint(settings),
             ..source.error(ErrorKind::Limit, span, message)
         },
         None => source.error(ErrorKind::Engine, span, message),
+    };
+    FileError {
+        engine: Some(Box::new(e.clone())),
+        ..err
     }
 }
 

@@ -156,6 +156,15 @@ pub struct FileError {
     /// without reading the message; `None` for a mistake of syntax and for every other error.
     /// Not part of the message. Boxed, to keep the error small.
     pub cause: Option<Box<trigpoly::ParseCause>>,
+    /// For an error of the engine (a computation's, or a text's the engine refused), that
+    /// error as the engine gave it, so that a program tells it apart without reading the
+    /// message: a refusal of the condition a computation was under
+    /// ([`EngineError::RefusedCondition`](brackets::EngineError::RefusedCondition), the
+    /// variable with the message) is placed in the condition's text by
+    /// [`LoadedSystem::condition_refusal`](super::LoadedSystem::condition_refusal), as a
+    /// search's is; `None` for every other error. Not part of the message. Boxed, to keep the
+    /// error small.
+    pub engine: Option<Box<brackets::EngineError>>,
 }
 
 impl FileError {
@@ -170,6 +179,7 @@ impl FileError {
             claim: None,
             warnings: None,
             cause: None,
+            engine: None,
         }
     }
 

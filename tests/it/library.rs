@@ -579,6 +579,49 @@ fn engine_errors_become_file_errors() {
     assert_eq!(err.kind.to_string(), "engine");
 }
 
+/// A program's closure under a condition the engine refuses (`M = 0`, which `G1` divides
+/// by) is placed in the condition's text as its search is: the closure's error keeps the
+/// engine's `RefusedCondition` (`FileError::engine`), which `condition_refusal` shows at
+/// `M`'s value, as it shows the search's (the closure's error had only the message, kind
+/// Engine, and no variable to place).
+#[test]
+fn a_programs_closure_places_a_refused_condition_as_its_search_does() {
+    let rotor = harmonic_rotor_file();
+    let text = "omega = 1, M = 0";
+    let condition = rotor.condition(text).unwrap();
+    let options = ClosureOptions::new(2).when(condition.clone());
+    let err =
+        file_closure_report(&rotor, &["L", "G1", "G2"], &options, Caller::Program).unwrap_err();
+    assert_eq!(
+        (err.kind, err.location.is_none()),
+        (ErrorKind::Engine, true)
+    );
+    let m = rotor.system().vars().lookup("M").unwrap();
+    let Some(EngineError::RefusedCondition { var, .. }) = err.engine.as_deref() else {
+        panic!("the closure's error keeps the engine's refusal: {err:?}");
+    };
+    assert_eq!(*var, m);
+    let placed = rotor.condition_refusal(text, err.engine.as_deref().unwrap());
+    assert_eq!(
+        (placed.kind, placed.line_col()),
+        (ErrorKind::Condition, Some((1, 16)))
+    );
+    assert!(
+        placed.to_string().starts_with(
+            "<condition>:1:16: the condition sets M = 0, but the generator G1 divides by M"
+        ),
+        "{placed}"
+    );
+    let space = SearchSpace::default().momenta_degree(1).positions_degree(1);
+    let search = SearchOptions::new(space).when(condition);
+    let Err(e) = file_search_report(&rotor, &search, Caller::Program) else {
+        panic!("the search refuses M = 0");
+    };
+    assert!(matches!(e, EngineError::RefusedCondition { var, .. } if var == m));
+    let searched = rotor.condition_refusal(text, &e);
+    assert_eq!(searched.line_col(), placed.line_col());
+}
+
 /// A degree limit of 0 given to the loader is refused as such (a file's `max_degree = 0`
 /// is): reading the Hamiltonian under it panicked. So are a term limit and a work limit of 0,
 /// which a file's `[limits]` and the command line refuse too: the first stopped at the
