@@ -10,6 +10,7 @@ use super::input::load_system;
 use anyhow::Context;
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
+use superint::brackets::EngineError;
 use superint::paper::{tower_report_with_progress, TowerSystem};
 use superint::render::render;
 use superint::system_file::{family_tower_report_with_progress, Caller, LimitsOverride};
@@ -148,6 +149,9 @@ pub fn run(job: &TowerJob) -> anyhow::Result<bool> {
             let when = (job.when.as_deref())
                 .map(|w| file.tower_condition(w, family))
                 .transpose();
+            // What the tower met under it past what tower_condition checks (an instance
+            // K_{m,n} beyond K_{1,1} that divides by a parameter it sets to 0) is a refusal of
+            // the condition too, shown at its value there, not at the family in the file.
             let report = when.and_then(|when| {
                 family_tower_report_with_progress(
                     &file,
@@ -156,6 +160,12 @@ pub fn run(job: &TowerJob) -> anyhow::Result<bool> {
                     when.as_ref(),
                     &mut progress,
                 )
+                .map_err(|e| match (job.when.as_deref(), e.engine.as_deref()) {
+                    (Some(w), Some(refused @ EngineError::RefusedCondition { .. })) => {
+                        file.condition_refusal(w, refused)
+                    }
+                    _ => e,
+                })
             });
             warned(&file, report)?
         }

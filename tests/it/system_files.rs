@@ -2441,6 +2441,32 @@ fn tower_refuses_a_condition_at_its_value_in_when() {
         );
         assert!(!text(&o.stderr).contains("panicked"), "{}", text(&o.stderr));
     }
+    // A family that divides by c only past K_{1,1} (c^(m − 1)): the tower met it at K_{2,1}
+    // and it was shown at the family's name = "K" in the file (a.toml:6:8).
+    let later = file.replace("/c\"", "/c^(m - 1)\"");
+    std::fs::write(dir.join("b.toml"), later).expect("write");
+    let o = superint_in(
+        &dir,
+        &[
+            "tower",
+            "--system",
+            "b.toml",
+            "--max",
+            "2",
+            "--when",
+            "c = 0, a = 1",
+        ],
+    );
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o.stdout));
+    assert!(
+        text(&o.stderr).starts_with(
+            "superint: error: <command line>:1:5: the condition sets c = 0, but the tower \
+             divides by c: give c a value other than 0, or leave it free\n 1 | c = 0, a = 1\n   \
+             |     ^"
+        ),
+        "{}",
+        text(&o.stderr)
+    );
 }
 
 /// Every family of a file with an eigenvalue has its tower checked, each in its own section:
