@@ -17,7 +17,10 @@
 //! lies in the space are found. Each integral is proved by the quotient `Q` of that
 //! division: `{K, H} − P·Q = 0`, recomputed from the bracket and the product.
 
-use trigpoly::{Division, DivisionOrder, DivisionRefusal, Expr, Rational, Var, VarKind};
+use trigpoly::num_rational::BigRational;
+use trigpoly::{
+    Division, DivisionOrder, DivisionRefusal, Expr, GaussianRational, Rational, Var, VarKind,
+};
 
 use crate::error::EngineError;
 use crate::system::System;
@@ -130,6 +133,12 @@ impl LevelSet {
             ));
         }
         let p = self.polynomial()?;
+        if !p.is_real() && (&p * &GaussianRational::i()).is_real() {
+            return invalid(format!(
+                "the level set's polynomial P = {p} is i times a real polynomial: divide EXPR \
+                 and VALUE by i"
+            ));
+        }
         if !p.is_real() {
             return invalid(format!(
                 "the level set's polynomial P = {p} is not real (it differs from its \
@@ -148,6 +157,23 @@ impl LevelSet {
             }
             Err(e) => return Err(refusal(&p, e)),
         };
+        let every_parameter: Vec<(Var, Rational)> = vars
+            .vars()
+            .filter(|&v| vars.variable(v).kind() == VarKind::Parameter && p.contains(v))
+            .map(|v| match fixed.iter().find(|(f, _)| *f == v) {
+                Some((_, x)) => (v, x.clone()),
+                None => (v, Rational::one()),
+            })
+            .collect();
+        let p_searched = fix_parameters(&p, &every_parameter)?;
+        if !has_no_repeated_factor(&p_searched, &order) {
+            return invalid(format!(
+                "the level set's polynomial P = {p_searched} has a repeated root on every one of \
+                 the {LINES_TRIED} lines through phase space tried, as a polynomial with a \
+                 repeated factor has: the functions on its level set are then not the normal \
+                 forms modulo P; write each factor of P once (A = 0 for A^2 = 0)"
+            ));
+        }
         let h = fix_parameters(
             system.hamiltonian(),
             if at.is_empty() { &[] } else { fixed },
@@ -162,6 +188,124 @@ impl LevelSet {
             ));
         }
         Ok(())
+    }
+}
+
+/// How many lines through phase space [`has_no_repeated_factor`] tries.
+const LINES_TRIED: usize = 12;
+
+/// Whether `p`, a real polynomial in the variables `order` names alone, is shown to have no
+/// repeated factor: its restriction `u(t) = p(a + t b)` to a line has the degree of `p` and no
+/// repeated root (`gcd(u, u′)` a constant, by Euclid's algorithm over Q). That is a proof: a
+/// factor `f²` of `p` would make `f(a + t b)²` a factor of `u`, of degree at least 2 since the
+/// top-degree part of `f` does not vanish at `b` where `p`'s does not. A square-free `p` has
+/// such a line almost everywhere; `false` when none of [`LINES_TRIED`] fixed lines shows it.
+/// Over Q as over C, since `gcd(u, u′)` does not depend on the field.
+fn has_no_repeated_factor(p: &Expr, order: &DivisionOrder) -> bool {
+    let degree = p
+        .terms()
+        .map(|t| {
+            let e = t.exponents();
+            order.variables().iter().map(|v| e[v.index()]).sum::<i64>()
+        })
+        .max()
+        .unwrap_or(0);
+    (0..LINES_TRIED).any(|k| {
+        let k = k as i64;
+        // A point and a direction with small integer coordinates, different for each line.
+        let line: Vec<(i64, i64)> = (0..order.variables().len() as i64)
+            .map(|i| {
+                (
+                    (3 * i + 5 * k + 1) % 7 - 3,
+                    (2 * i * i + 3 * k + i + 1) % 11 + 1,
+                )
+            })
+            .collect();
+        let u = restricted_to_line(p, order, &line);
+        u.len() as i64 - 1 == degree && univariate::gcd_with_derivative_is_constant(&u)
+    })
+}
+
+/// `p(a + t b)` as its coefficients in `t`, lowest first, for the point and direction
+/// `(a_i, b_i)` of `line` over the variables of `order` (the real parts of `p`'s coefficients:
+/// `p` is real).
+fn restricted_to_line(p: &Expr, order: &DivisionOrder, line: &[(i64, i64)]) -> Vec<BigRational> {
+    let mut sum: Vec<BigRational> = Vec::new();
+    for t in p.terms() {
+        let e = t.exponents();
+        let mut product = vec![t.coeff().re.to_big_rational()];
+        for (v, &(a, b)) in order.variables().iter().zip(line) {
+            let factor = [
+                BigRational::from_integer(a.into()),
+                BigRational::from_integer(b.into()),
+            ];
+            for _ in 0..e[v.index()] {
+                product = univariate::mul(&product, &factor);
+            }
+        }
+        sum = univariate::add(&sum, &product);
+    }
+    univariate::trimmed(sum)
+}
+
+/// Polynomials in one variable over Q, as coefficient vectors (lowest first, no trailing
+/// zero), for the square-free test of a level set.
+mod univariate {
+    use num_traits::Zero;
+    use trigpoly::num_rational::BigRational;
+
+    /// `u` without trailing zeros.
+    pub(super) fn trimmed(mut u: Vec<BigRational>) -> Vec<BigRational> {
+        while u.last().is_some_and(Zero::is_zero) {
+            u.pop();
+        }
+        u
+    }
+
+    pub(super) fn add(u: &[BigRational], w: &[BigRational]) -> Vec<BigRational> {
+        let zero = BigRational::zero();
+        (0..u.len().max(w.len()))
+            .map(|i| u.get(i).unwrap_or(&zero) + w.get(i).unwrap_or(&zero))
+            .collect()
+    }
+
+    pub(super) fn mul(u: &[BigRational], w: &[BigRational]) -> Vec<BigRational> {
+        let mut product = vec![BigRational::zero(); (u.len() + w.len()).saturating_sub(1)];
+        for (i, a) in u.iter().enumerate() {
+            for (j, b) in w.iter().enumerate() {
+                product[i + j] += a * b;
+            }
+        }
+        product
+    }
+
+    /// The remainder of `u` on division by `w` (`w` nonzero, trimmed).
+    fn remainder(u: &[BigRational], w: &[BigRational]) -> Vec<BigRational> {
+        let mut r = trimmed(u.to_vec());
+        let lead = &w[w.len() - 1];
+        while r.len() >= w.len() {
+            let factor = &r[r.len() - 1] / lead;
+            let shift = r.len() - w.len();
+            for (i, c) in w.iter().enumerate() {
+                r[shift + i] -= &factor * c;
+            }
+            r = trimmed(r);
+        }
+        r
+    }
+
+    /// Whether `gcd(u, u′)` is a nonzero constant: `u` (of degree at least 1) has no repeated
+    /// root.
+    pub(super) fn gcd_with_derivative_is_constant(u: &[BigRational]) -> bool {
+        let derivative: Vec<BigRational> = (1..u.len())
+            .map(|i| &u[i] * BigRational::from_integer((i as i64).into()))
+            .collect();
+        let (mut a, mut b) = (trimmed(u.to_vec()), trimmed(derivative));
+        while !b.is_empty() {
+            let r = remainder(&a, &b);
+            (a, b) = (b, r);
+        }
+        a.len() == 1
     }
 }
 
@@ -249,30 +393,6 @@ impl OnLevel {
         Ok(p_divide(f, &self.fixed, &self.order)?.remainder)
     }
 
-    /// Refuses the level set where `f`, a nonzero normal form found (at the fixed values), is
-    /// zero on it all the same: where a power `f^e` is a multiple of `P`, `P` has a repeated
-    /// factor (`A²` for `A = M·γ`, whose normal forms hold `A` itself) and the integrals found
-    /// would be counted modulo `(P)`, not as functions on the level set. Decided exactly: if
-    /// `P = Π fᵢ^{eᵢ}` and some power of `f` is a multiple of `P`, each `fᵢ` divides `f` and
-    /// `f^{max eᵢ}` is one, with `max eᵢ ≤ deg P`; the powers are taken modulo `P`.
-    pub(super) fn refuse_vanishing(&self, f: &Expr) -> Result<(), EngineError> {
-        let degree: i64 = self.lead.iter().sum();
-        let mut power = self.remainder(f)?;
-        for e in 2..=degree {
-            power = self.remainder(&power.checked_mul(f)?)?;
-            if power.is_zero() {
-                return Err(EngineError::Invalid(format!(
-                    "the level set's polynomial P = {} has a repeated factor: the function \
-                     {f} found, in normal form, is zero where P = 0 (its power {e} is a \
-                     multiple of P), so the functions on the level set are not the normal \
-                     forms modulo P; write each factor of P once (A = 0 for A^2 = 0)",
-                    self.fixed
-                )));
-            }
-        }
-        Ok(())
-    }
-
     /// The proof that `flow` lies in `(p)` (`p` is `P` at the fixed values or with its
     /// parameters, as `flow` is): the quotient `Q`, where the remainder is zero and
     /// `flow − p·Q`, recomputed, is zero; `None` where it is not.
@@ -293,7 +413,7 @@ impl OnLevel {
 mod tests {
     use trigpoly::{Expr, Rational, VarKind, Vars};
 
-    use super::LevelSet;
+    use super::{has_no_repeated_factor, LevelSet};
     use crate::search::{search, SearchOptions, SearchResult, SearchSpace};
     use crate::{EngineError, PhaseSpace, System};
 
@@ -507,6 +627,28 @@ mod tests {
     /// the flow leaves (`M1`, `{M1, H} = −3 M2 M3`), an angle, a negative power, a constant, a
     /// value of phase space, a polynomial that is not real, a square, a parameter in the
     /// leading coefficient, and a condition besides.
+    /// The square-free test is a proof where it says yes, and says no of a repeated factor:
+    /// `Γ⁴ − 1 = (Γ − 1)(Γ + 1)(Γ² + 1)` and `M1² − γ1²` are shown square-free, `M1² γ1` and
+    /// `(M·γ)² (Γ − 1)` are not.
+    #[test]
+    fn a_level_sets_polynomial_is_shown_square_free_or_not() {
+        let top = gc_top();
+        let order = LevelSet::order(&top);
+        let p = |s: &str| Expr::parse(top.vars(), s).unwrap();
+        let gamma = "(gamma1^2 + gamma2^2 + gamma3^2)";
+        let area = "(M1*gamma1 + M2*gamma2 + M3*gamma3)";
+        assert!(has_no_repeated_factor(
+            &p(&format!("{gamma}^4 - 1")),
+            &order
+        ));
+        assert!(has_no_repeated_factor(&p("M1^2 - gamma1^2"), &order));
+        assert!(!has_no_repeated_factor(&p("M1^2*gamma1"), &order));
+        assert!(!has_no_repeated_factor(
+            &p(&format!("{area}^2*({gamma} - 1)")),
+            &order
+        ));
+    }
+
     #[test]
     fn level_sets_the_search_cannot_take_are_refused() {
         let top = gc_top();
@@ -528,12 +670,22 @@ mod tests {
         assert!(m.contains("P = M1 + i γ1 is not real"), "{m}");
         assert!(refused("M1*gamma1 + M2*gamma2 + M3*gamma3", "i").contains("is not real"));
         // A square: M·γ, a normal form modulo (M·γ)², is zero on its level set, and would be
-        // counted an integral there.
-        let m = refused("(M1*gamma1 + M2*gamma2 + M3*gamma3)^2", "0");
-        assert!(
-            m.contains("has a repeated factor") && m.contains("its power 2"),
-            "{m}"
-        );
+        // counted an integral there; and Γ − 1 of (Γ − 1)², which is no basis element of the
+        // quadratics found but lies in their span.
+        for square in [
+            "(M1*gamma1 + M2*gamma2 + M3*gamma3)^2",
+            "(gamma1^2 + gamma2^2 + gamma3^2 - 1)^2",
+        ] {
+            let m = refused(square, "0");
+            assert!(
+                m.contains("a repeated root on every one of the 12 lines")
+                    && m.contains("write each factor of P once"),
+                "{m}"
+            );
+        }
+        // i times a real polynomial is one real equation: the message says to divide by i.
+        let m = refused("i*(gamma1^2 + gamma2^2 + gamma3^2)", "i");
+        assert!(m.contains("is i times a real polynomial"), "{m}");
         assert!(
             refused("c*M1*gamma1 + c*M2*gamma2 + c*M3*gamma3", "0").contains("holds a parameter")
         );

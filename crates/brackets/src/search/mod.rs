@@ -504,7 +504,6 @@ impl<'a> Prover<'a> {
         reference: &[i64],
     ) -> Result<Integral, EngineError> {
         let system = self.system;
-        level.refuse_vanishing(&fixed)?;
         let at_fixed = level.prove(&self.problem.flow(system, &fixed)?, &level.fixed)?;
         let prove_symbolic = |f: &Expr| -> Result<Option<LevelProof>, EngineError> {
             match &level.symbolic {
