@@ -2442,7 +2442,7 @@ fn tower_refuses_a_condition_at_its_value_in_when() {
         assert!(!text(&o.stderr).contains("panicked"), "{}", text(&o.stderr));
     }
     // A family that divides by c only past K_{1,1} (c^(m − 1)): the tower met it at K_{2,1}
-    // and it was shown at the family's name = "K" in the file (a.toml:6:8).
+    // and it was shown at the family's name = "K" in the file (b.toml:6:8).
     let later = file.replace("/c\"", "/c^(m - 1)\"");
     std::fs::write(dir.join("b.toml"), later).expect("write");
     let o = superint_in(
