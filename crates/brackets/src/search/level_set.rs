@@ -157,15 +157,7 @@ impl LevelSet {
             }
             Err(e) => return Err(refusal(&p, e)),
         };
-        let every_parameter: Vec<(Var, Rational)> = vars
-            .vars()
-            .filter(|&v| vars.variable(v).kind() == VarKind::Parameter && p.contains(v))
-            .map(|v| match fixed.iter().find(|(f, _)| *f == v) {
-                Some((_, x)) => (v, x.clone()),
-                None => (v, Rational::one()),
-            })
-            .collect();
-        let p_searched = fix_parameters(&p, &every_parameter)?;
+        let p_searched = fix_parameters(&p, &level_parameter_values(&p, fixed))?;
         if !has_no_repeated_factor(&p_searched, &order) {
             return invalid(format!(
                 "the level set's polynomial P = {p_searched} has a repeated root on every one of \
@@ -189,6 +181,19 @@ impl LevelSet {
         }
         Ok(())
     }
+}
+
+/// The parameters that `p` holds, in the order of their declaration, at their value in
+/// `given` or else 1: the values a search on its level set takes them at.
+pub(super) fn level_parameter_values(p: &Expr, given: &[(Var, Rational)]) -> Vec<(Var, Rational)> {
+    let vars = p.vars();
+    vars.vars()
+        .filter(|&v| vars.variable(v).kind() == VarKind::Parameter && p.contains(v))
+        .map(|v| match given.iter().find(|(g, _)| *g == v) {
+            Some((_, x)) => (v, x.clone()),
+            None => (v, Rational::one()),
+        })
+        .collect()
 }
 
 /// How many lines through phase space [`has_no_repeated_factor`] tries.

@@ -297,7 +297,7 @@ fn fixed_search_problem(
     refuse_unreal(system, options)?;
     let mut parameters = parameter_values(system, condition, &options.fixed, &options.symbolic);
     if let Some(level) = &options.on {
-        with_level_parameters(system, level, &options.fixed, &mut parameters)?;
+        with_level_parameters(level, &options.fixed, &mut parameters)?;
     }
     let zero_at_one = off_vanishing_denominators(
         system.vars(),
@@ -372,20 +372,13 @@ fn refuse_beside_level_set(system: &System, options: &SearchOptions) -> Result<(
 /// Adds to `parameters` those of the level set's polynomial that they lack, at their value in
 /// `given` or 1, in the order of their declaration.
 fn with_level_parameters(
-    system: &System,
     level: &LevelSet,
     given: &[(Var, Rational)],
     parameters: &mut Vec<(Var, Rational)>,
 ) -> Result<(), EngineError> {
-    let p = level.polynomial()?;
-    let vars = system.vars();
-    for v in vars.vars() {
-        if vars.variable(v).kind() == VarKind::Parameter
-            && p.contains(v)
-            && !parameters.iter().any(|(w, _)| *w == v)
-        {
-            let value = given.iter().find(|g| g.0 == v).map(|g| g.1.clone());
-            parameters.push((v, value.unwrap_or_else(Rational::one)));
+    for (v, value) in level_set::level_parameter_values(&level.polynomial()?, given) {
+        if !parameters.iter().any(|(w, _)| *w == v) {
+            parameters.push((v, value));
         }
     }
     parameters.sort_by_key(|(v, _)| v.index());
