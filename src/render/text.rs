@@ -337,7 +337,7 @@ const PARALLEL_TERMS: usize = 10_000;
 
 fn equations(out: &mut Vec<String>, eq: &Equations) {
     if !eq.caption.is_empty() {
-        out.push(format!("{}:", plain(&eq.caption)));
+        out.extend(prose(&format!("{}:", eq.caption)));
     }
     let lw = eq.lines.iter().map(|l| width(&l.lhs)).max().unwrap_or(0);
     let indent = " ".repeat(4 + lw + 3);
@@ -482,7 +482,7 @@ fn table_body(out: &mut Vec<String>, t: &TableResult) {
     if total > WRAP {
         return table_as_list(out, t, &cells);
     }
-    out.push(plain(&t.caption));
+    out.extend(prose(&t.caption));
     let row = |head: &str, items: &[String]| {
         let body: Vec<String> = items.iter().zip(&widths).map(|(c, &w)| pad(c, w)).collect();
         format!("    {} │ {}", pad(head, first), body.join("   "))
@@ -813,6 +813,25 @@ mod tests {
         // Prose parentheses are no formula: a long one breaks inside.
         let aside = format!("({})", "word ".repeat(30).trim_end());
         assert!(prose(&aside).len() > 1);
+    }
+
+    /// A caption of equations wider than a line wraps as prose does: the caption of
+    /// `search --on`'s quotients names the level set's polynomial, of any length.
+    #[test]
+    fn captions_wrap_as_prose() {
+        let long = format!(
+            "The integrals on the level set alone: `{{I, H}} = Q P`, `P = {}`, with",
+            (1..=12)
+                .map(|k| format!("x_{k} y_{k}"))
+                .collect::<Vec<_>>()
+                .join(" + ")
+        );
+        let eq = Equations::new(long.clone(), Vec::new());
+        let mut out = Vec::new();
+        equations(&mut out, &eq);
+        assert!(out.len() > 1, "{out:?}");
+        assert!(out.iter().all(|l| width(l) <= WRAP), "{out:?}");
+        assert_eq!(out.join(" "), format!("{}:", plain(&long)));
     }
 
     /// A term wider than a line stays with its sign: `+ 1000…0x` was a `+` on a line of its
