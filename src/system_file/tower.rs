@@ -709,10 +709,15 @@ fn family_sides(file: &LoadedSystem, ks: &[usize]) -> Result<Vec<Expr>, FileErro
 }
 
 /// A refusal of a tower's condition given without its text (a program's
-/// [`Condition`]), which has no place to show it at: named `<condition>`.
+/// [`Condition`]), which has no place to show it at: named `<condition>`, and keeping the
+/// engine's refusal ([`FileError::engine`]) for
+/// [`LoadedSystem::condition_refusal`] to place in the condition's text.
 fn unplaced_refusal(file: &LoadedSystem, e: &EngineError) -> FileError {
     let origin = file.given("<condition>", "").origin;
-    FileError::new(ErrorKind::Condition, &origin, e.to_string())
+    FileError {
+        engine: Some(Box::new(e.clone())),
+        ..FileError::new(ErrorKind::Condition, &origin, e.to_string())
+    }
 }
 
 impl LoadedSystem {

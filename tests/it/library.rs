@@ -579,6 +579,31 @@ fn engine_errors_become_file_errors() {
     assert_eq!(err.kind.to_string(), "engine");
 }
 
+/// A program's tower under a condition it refuses before any bracket (a phase variable set,
+/// or `J = 0` where H divides by `J`) keeps the engine's refusal (`FileError::engine`), so
+/// that `condition_refusal` places it in the condition's text as a closure's is placed (it
+/// had only the message, and nothing to place).
+#[test]
+fn a_programs_tower_keeps_a_refused_condition_to_place() {
+    let towered = own_rotor_with_tower();
+    for (text, var, column) in [("J = 0", "J", 5), ("p_phi = J*k", "p_phi", 9)] {
+        let condition = towered.condition(text).unwrap();
+        let err = family_tower_report(&towered, Some("R"), 2, Some(&condition)).unwrap_err();
+        assert_eq!(
+            (err.kind, err.location.is_none()),
+            (ErrorKind::Condition, true)
+        );
+        let Some(refused @ EngineError::RefusedCondition { var: set, .. }) = err.engine.as_deref()
+        else {
+            panic!("the tower's error keeps the engine's refusal: {err:?}");
+        };
+        assert_eq!(*set, towered.system().vars().lookup(var).unwrap());
+        let placed = towered.condition_refusal(text, refused);
+        assert_eq!(placed.line_col(), Some((1, column)), "{placed}");
+        assert_eq!(placed.message, err.message);
+    }
+}
+
 /// A program's closure under a condition the engine refuses (`M = 0`, which `G1` divides
 /// by) is placed in the condition's text as its search is: the closure's error keeps the
 /// engine's `RefusedCondition` (`FileError::engine`), which `condition_refusal` shows at
