@@ -72,8 +72,8 @@ pub struct SearchArgs {
     /// Search on a level set EXPR = VALUE that the flow of H keeps, such as
     /// 'M1*gamma1 + M2*gamma2 + M3*gamma3 = 0' (EXPR a polynomial in the coordinates, momenta
     /// and Poisson variables, VALUE a constant): finds the integrals K, in normal form modulo
-    /// P = EXPR − VALUE, with {K, H} = Q·P, each identity checked exactly. Not with --when,
-    /// --symbolic or --new-only.
+    /// P = EXPR − VALUE, with {K, H} = Q·P, each identity checked exactly. Not with --when
+    /// or --symbolic; with --new-only, known integrals and products are taken modulo P.
     #[arg(long, value_name = "LEVEL")]
     on: Option<String>,
     /// Total degree in the momenta (an angle's momentum that --when fixes is left out)
@@ -157,8 +157,8 @@ pub struct SearchArgs {
           value_parser = super::Quoting(super::at_least_one))]
     max_products: u64,
     /// More known integrals for --new-only: expressions or family instances (P_1_1),
-    /// separated by commas. Each must be a real integral (under --when); one that is not is
-    /// an error.
+    /// separated by commas. Each must be a real integral (under --when; with --on, on the
+    /// level set, taken modulo P); one that is not is an error.
     #[arg(long, value_name = "EXPRS", requires = "new_only")]
     known: Option<String>,
     /// Threads for forming the equations, solving them, proving the integrals and printing
@@ -239,8 +239,7 @@ impl SearchArgs {
 
 impl SearchArgs {
     /// Refuses, with `--on`, what a search on a level set does not take: `--when` (two
-    /// restrictions at once), `--symbolic` and `--new-only` (whose products would have to be
-    /// reduced modulo the level set's polynomial too).
+    /// restrictions at once) and `--symbolic`.
     fn refuse_beside_level_set(&self) -> anyhow::Result<()> {
         let refused = [
             (
@@ -253,12 +252,6 @@ impl SearchArgs {
                 "--symbolic",
                 "the parameters are fixed (1 unless --fix says otherwise) and each integral \
                  found is lifted back to them where it can be, and proved there",
-            ),
-            (
-                self.new_only,
-                "--new-only",
-                "which integrals are new would need the products of integrals modulo the level \
-                 set's polynomial, which is not done",
             ),
         ];
         match refused.iter().find(|(given, _, _)| *given) {

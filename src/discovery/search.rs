@@ -1306,8 +1306,16 @@ fn new_integrals_text(r: &SearchResult, n: &NewIntegrals) -> String {
     } else {
         format!("`{}`", n.known.join(", "))
     };
+    // On a level set every integral compared is a normal form modulo `P`.
+    let modulo = match r.on {
+        Some(_) => {
+            ", every known integral and product taken in normal form modulo `P` and \
+                   not counted where that leaves the space"
+        }
+        None => "",
+    };
     format!(
-        "Known integrals in the space: {known}. {} ({} formed); {}",
+        "Known integrals in the space: {known}. {} ({} formed){modulo}; {}",
         generation_rule(r),
         counted(n.products, "product"),
         generated_span(r, n),

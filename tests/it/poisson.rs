@@ -953,7 +953,7 @@ fn a_search_on_an_energy_level_finds_the_cubic_integrals_of_the_oscillator() {
 /// `search --on` refuses what it cannot take, each refusal placed in the `--on` text with a
 /// caret (exit 2, no panic): an angle, a non-polynomial, a level set the flow leaves, a text
 /// with no `=`, a value of phase space, a parameter in the leading coefficient; and the
-/// options it does not take beside it.
+/// options it does not take beside it (`--new-only` it takes).
 #[test]
 fn a_level_set_the_search_cannot_take_is_refused_in_place() {
     let rotor = "systems/harmonic-rotor.toml";
@@ -1001,7 +1001,6 @@ fn a_level_set_the_search_cannot_take_is_refused_in_place() {
     for (option, extra) in [
         ("--when", vec!["--when", "c = 2"]),
         ("--symbolic", vec!["--symbolic", "c"]),
-        ("--new-only", vec!["--new-only"]),
     ] {
         let args = [&["search", top, "--on", "A = 0"][..], &extra[..]].concat();
         let out = superint(&args);
@@ -1012,4 +1011,66 @@ fn a_level_set_the_search_cannot_take_is_refused_in_place() {
             "{stderr}"
         );
     }
+    let out = superint(&["search", top, "--on", "A = 0", "--new-only"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+}
+
+/// `search --on --new-only` on the Goryachev–Chaplygin top at Poisson degree 6: with the
+/// file's functions known (`H`, `Γ` and `K`, whose bracket is a multiple of `P`; `A` is 0
+/// there) nothing is new; with the file cut before `K`, `K` alone is, and the 13 other
+/// dimensions (`Γ²`, `Γ K`, `K²`, ... in normal form modulo `P`) are generated; JSON has both
+/// the level set and the new integrals. A known integral that is none on the level set is
+/// refused in place.
+#[test]
+fn new_integrals_on_a_level_set_are_told_modulo_its_polynomial() {
+    let f = "systems/goryachev-chaplygin-top.toml";
+    let on = ["--on", "M1*gamma1 + M2*gamma2 + M3*gamma3 = 0"];
+    let rest = ["--poisson-degree", "6", "--new-only", "--no-timings"];
+    let run = |file: &str, extra: &[&str]| {
+        superint(&[&["search", file][..], &on[..], &rest[..], extra].concat())
+    };
+    let o = run(f, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let out = crate::normalize(&text(&o.stdout));
+    for line in [
+        "Known integrals in the space: H, Γ, K.",
+        "every known integral and product taken in normal form modulo P and not counted where \
+         that leaves the space",
+        "None: the known integrals generate every integral in the space.",
+    ] {
+        assert!(out.contains(line), "{line}: {out}");
+    }
+    let whole =
+        std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(f)).unwrap();
+    let without_k = &whole[..whole.find("[[function]]\nname = \"K\"").expect("K")];
+    let file = crate::scratch_text("level-set-new-only", "gc.toml", without_k);
+    let file = file.to_str().unwrap();
+    let o = run(file, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let out = crate::normalize(&text(&o.stdout));
+    for line in [
+        "Known integrals in the space: H, Γ.",
+        "the generated ones span 13 of the 14 dimensions",
+        "New integrals: I4 = M1² M3 + c M1 γ3 + M2² M3",
+        "{I4, H} = Q4 (M1 γ1 + M2 γ2 + M3 γ3)",
+    ] {
+        assert!(out.contains(line), "{line}: {out}");
+    }
+    let json = run(file, &["--format", "json"]);
+    assert_eq!(json.status.code(), Some(0), "{}", text(&json.stderr));
+    let v: Value = serde_json::from_slice(&json.stdout).expect("JSON");
+    let search = &v["searches"][0];
+    assert_eq!(search["level_set"]["leading_monomial"], "M1*gamma1");
+    assert_eq!(search["new_only"]["generated"], 13);
+    assert_eq!(search["new_only"]["known"], serde_json::json!(["H", "Γ"]));
+    let o = run(file, &["--known", "Gamma,M1"]);
+    let stderr = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains(
+            "<command line>:1:7: --known: M1 is not an integral on the level set \
+             M1*gamma1 + M2*gamma2 + M3*gamma3 = 0"
+        ) && stderr.contains("not a multiple of P = M1 γ1 + M2 γ2 + M3 γ3"),
+        "{stderr}"
+    );
 }

@@ -628,6 +628,105 @@ mod tests {
         );
     }
 
+    /// With `new_only` on the area level set every integral is compared in normal form modulo
+    /// `P`: on a top with no named functions but `H`, `Γ` and `K` are new, and the products up
+    /// to degree 5 (`Γ²`, `Γ H`, `H²`, `Γ K`, `H K`) are not; `Γ K` and `H K` have monomials
+    /// that `LM(P) = M1 γ1` divides (left out of the space), so only their normal forms lie in
+    /// it. Given `K` as known, only `Γ` is new; `M·γ`, zero there, is no known integral; `M1`, whose bracket is no multiple
+    /// of `P`, is refused.
+    #[test]
+    fn new_integrals_on_a_level_set_are_told_in_normal_form_modulo_its_polynomial() {
+        let top = gc_top();
+        let e = |t: &str| Expr::parse(top.vars(), t).unwrap();
+        let area = "M1*gamma1 + M2*gamma2 + M3*gamma3";
+        let k = e("M3*(M1^2 + M2^2) + c*M1*gamma3");
+        let options = || {
+            SearchOptions::new(SearchSpace::default().poisson_degree(5))
+                .on(level(&top, area, "0"))
+                .new_only()
+        };
+        let r = search(&top, &options()).unwrap();
+        let new = r.new.as_ref().expect("new integrals");
+        // 1, Γ, H, K, Γ², Γ H, H², Γ K, H K.
+        assert_eq!(r.basis.len(), 9);
+        let degrees: Vec<i64> = (new.new.iter())
+            .map(|&i| r.basis[i].poisson_degree)
+            .collect();
+        assert_eq!(degrees, [2, 3], "{:?}", new.new);
+        assert_eq!(r.basis[new.new[1]].expr(), &k);
+        assert_eq!(new.generated, 7);
+        assert_eq!(new.known, ["H"]);
+        // Γ K is no normal form, and its remainder is one of the space.
+        let gamma = e("gamma1^2 + gamma2^2 + gamma3^2");
+        let order = LevelSet::order(&top);
+        let product = gamma.checked_mul(&k).unwrap();
+        let remainder = product.divide_by(&e(area), &order).unwrap().remainder;
+        assert_ne!(remainder, product);
+
+        // K known (its bracket −c M2 (M·γ) is a multiple of P), and M·γ, which is 0 there.
+        let mut with_known = options();
+        with_known.known = vec![("K".into(), k.clone()), ("A".into(), e(area))];
+        let r = search(&top, &with_known).unwrap();
+        let new = r.new.as_ref().unwrap();
+        assert_eq!(new.known, ["H", "K"]);
+        assert_eq!(new.new.len(), 1);
+        assert_eq!(r.basis[new.new[0]].poisson_degree, 2);
+
+        let mut not_integral = options();
+        not_integral.known = vec![("M1".into(), e("M1"))];
+        match search(&top, &not_integral) {
+            Err(EngineError::RefusedKnown { index, reason, .. }) => {
+                assert_eq!(index, 0);
+                assert!(
+                    reason.contains("is not an integral on the level set")
+                        && reason.contains("not a multiple of P = M1 γ1 + M2 γ2 + M3 γ3"),
+                    "{reason}"
+                );
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+
+    /// On canonical coordinates, the 1:2 oscillator on `H = E` (at `E = 1`) with its first
+    /// oscillator's energy `H_x = (p_x² + x²)/2` known, given as it is written: `x²` is left
+    /// out of the space (`LM(H − E) = x²`), so `H_x` is located by its normal form
+    /// `E − (p_y² + 4y²)/2`; the cubic integrals `Re(a² b̄)` and `Im(a² b̄)` are new and `H_x²`
+    /// is not.
+    #[test]
+    fn new_integrals_on_an_energy_level_take_the_known_ones_modulo_it() {
+        let vars = Vars::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .momentum("p_x")
+            .momentum("p_y")
+            .parameter("E")
+            .build()
+            .unwrap();
+        let e = |t: &str| Expr::parse(&vars, t).unwrap();
+        let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")]).unwrap();
+        let h = "(p_x^2 + p_y^2)/2 + (x^2 + 4*y^2)/2";
+        let oscillator = System::new("1:2 oscillator", space, e(h)).unwrap();
+        let mut options =
+            SearchOptions::new(SearchSpace::default().momenta_degree(4).positions_degree(4))
+                .on(level(&oscillator, h, "E"))
+                .new_only();
+        options.known = vec![("Hx".into(), e("(p_x^2 + x^2)/2"))];
+        let r = search(&oscillator, &options).unwrap();
+        let new = r.new.as_ref().expect("new integrals");
+        assert_eq!(new.known, ["Hx"]);
+        // 1, H_x, the two cubics and H_x².
+        assert_eq!(r.basis.len(), 5);
+        let total = |f: &Expr| {
+            f.total_degree(&[VarKind::Coordinate, VarKind::Momentum])
+                .unwrap()
+        };
+        let degrees: Vec<i64> = (new.new.iter())
+            .map(|&i| total(&r.basis[i].fixed))
+            .collect();
+        assert_eq!(degrees, [3, 3]);
+        assert_eq!(new.generated, 3);
+    }
+
     /// What the search cannot take on a level set is refused with what is wrong: a level set
     /// the flow leaves (`M1`, `{M1, H} = −3 M2 M3`), an angle, a negative power, a constant, a
     /// value of phase space, a polynomial that is not real, a square, a parameter in the

@@ -1,6 +1,7 @@
-//! Where a function of the space sits among the unknowns, for `--new-only`: by its monomials,
-//! or, with denominator atoms or radicals (whose monomials are not independent functions), by
-//! its image under a [`Clearing`] written in the images of the basis integrals.
+//! Where a function of the space sits among the unknowns, for `--new-only`: by its monomials
+//! (on a level set, its normal form's), or, with denominator atoms or radicals (whose
+//! monomials are not independent functions), by its image under a [`Clearing`] written in the
+//! images of the basis integrals.
 
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -20,7 +21,8 @@ type Parts = (SparseVec<Rational>, SparseVec<Rational>);
 
 /// The coordinates of a function among the unknowns, if it lies in the space.
 pub(super) enum Locator<'a> {
-    /// By the monomials of the space, which are independent functions.
+    /// By the monomials of the space, which are independent functions; on a level set, those
+    /// of a function's normal form modulo its polynomial ([`Problem::normal_form`]).
     Monomials(&'a Problem),
     /// With denominator atoms or radicals, through the cleared images of the basis integrals.
     Cleared(Box<ClearedBasis>),
@@ -30,7 +32,7 @@ impl Locator<'_> {
     /// The coordinates of a real function `f`, if it lies in the space.
     pub(super) fn coordinates(&self, f: &Expr) -> Result<Option<SparseVec<Rational>>, EngineError> {
         match self {
-            Locator::Monomials(problem) => Ok(problem.coordinates(f)),
+            Locator::Monomials(problem) => Ok(problem.coordinates(&*problem.normal_form(f)?)),
             Locator::Cleared(basis) => basis.coordinates(f),
         }
     }
@@ -39,7 +41,9 @@ impl Locator<'_> {
     /// each written in the unknowns' monomials, if both lie in the space.
     pub(super) fn parts(&self, p: &Expr) -> Result<Option<Parts>, EngineError> {
         match self {
-            Locator::Monomials(problem) => Ok(problem.coordinates_of_parts(p)),
+            Locator::Monomials(problem) => {
+                Ok(problem.coordinates_of_parts(&*problem.normal_form(p)?))
+            }
             Locator::Cleared(basis) if basis.past_free_degree(p) => Ok(None),
             Locator::Cleared(basis) => {
                 let (_, re, im) = p.conj_re_im();

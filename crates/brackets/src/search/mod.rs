@@ -306,6 +306,10 @@ fn fixed_search_problem(
         system.space().denominator_atoms().iter(),
     );
     let fixed = fixed_hamiltonian_and_condition(system, options, &parameters)?;
+    let on_level = match &options.on {
+        Some(level) => Some(OnLevel::new(level, system, &parameters)?),
+        None => None,
+    };
     // A known integral that is none is refused here, before the space's unknowns are formed.
     if options.new_only {
         let at = AtValues {
@@ -313,12 +317,11 @@ fn fixed_search_problem(
             condition: fixed.condition.as_deref(),
             parameters: &parameters,
         };
-        new_only::refuse_given_known(system, &at, options)?;
+        new_only::refuse_given_known(system, &at, on_level.as_ref(), options)?;
     }
     let problem = fixed.problem(system, options, &parameters)?;
-    let (problem, on) = match &options.on {
-        Some(level) => {
-            let at = OnLevel::new(level, system, &parameters)?;
+    let (problem, on) = match (&options.on, on_level) {
+        (Some(level), Some(at)) => {
             let leading_monomial = Expr::from_terms(
                 system.vars(),
                 [(trigpoly::GaussianRational::from(1), at.lead.clone())],
@@ -333,7 +336,7 @@ fn fixed_search_problem(
             };
             (problem, Some(searched))
         }
-        None => (problem, None),
+        _ => (problem, None),
     };
     Ok(FixedSearch {
         parameters,
@@ -344,14 +347,12 @@ fn fixed_search_problem(
 }
 
 /// Refuses what a search on a level set does not take: a condition besides, parameters kept
-/// symbolic, new integrals, a system with denominators or radicals, a Laurent space.
+/// symbolic, a system with denominators or radicals, a Laurent space.
 fn refuse_beside_level_set(system: &System, options: &SearchOptions) -> Result<(), EngineError> {
     let refused = if options.condition.is_some() {
         Some("a condition besides (search on the level set alone, or under the condition alone)")
     } else if !options.symbolic.is_empty() {
         Some("parameters kept symbolic (fix them, or leave them at 1, and the integrals found are lifted back where they can be)")
-    } else if options.new_only {
-        Some("new integrals only (the products of integrals would be taken modulo the level set's polynomial, which is not done)")
     } else if !system.space().denominator_atoms().is_empty()
         || !system.space().radicals().is_empty()
     {

@@ -7,6 +7,7 @@ use crate::error::{EngineError, EngineLimit};
 use crate::modular::{self, sum_by_index, CombinationSums, Echelon, Field, Fp, SparseVec};
 use crate::system::System;
 
+use super::level_set::OnLevel;
 use super::locate::{ClearedBasis, Locator};
 use super::options::{SearchOptions, SearchSpace};
 use super::parameters::{
@@ -509,12 +510,14 @@ struct KnownIntegrals {
 }
 
 /// Refuses, before the search, the first known integral given in `options.known` that is not
-/// real or is no integral (under the condition, at the fixed values, `at`), by one bracket
+/// real or is no integral (under the condition, at the fixed values, `at`; on the level set
+/// `on`, its bracket with `H` no multiple of the level set's polynomial), by one bracket
 /// with `H` each and before the space's unknowns are formed ([`EngineError::RefusedKnown`],
 /// which says which one by its place in the list).
 pub(super) fn refuse_given_known(
     system: &System,
     at: &AtValues<'_>,
+    on: Option<&OnLevel>,
     options: &SearchOptions,
 ) -> Result<(), EngineError> {
     let parameters = at.parameters;
@@ -529,8 +532,9 @@ pub(super) fn refuse_given_known(
                 "is not real: give its real and imaginary parts, re({name}) and im({name})"
             )));
         }
-        let flow = at.flow(system, &fix_parameters(f, parameters)?)?;
-        if !at.vanishes(system, &flow)? {
+        let fixed = fix_parameters(f, parameters)?;
+        if !at.is_integral(system, &fixed, on)? {
+            let flow = at.flow(system, &fixed)?;
             return Err(refused(not_an_integral(name, &flow, options, parameters)));
         }
     }
@@ -567,7 +571,7 @@ fn known_integrals(
             continue;
         }
         let fv = fix_parameters(&f, parameters)?;
-        if !given && !problem.vanishes(system, &problem.flow(system, &fv)?)? {
+        if !given && !problem.is_integral(system, &fv)? {
             continue;
         }
         let restricted = without_parameter_denominators(&problem.apply_condition(fv)?, symbolic)?;
@@ -591,7 +595,8 @@ fn known_integrals(
 
 /// Why a known integral `name` whose bracket with `H` is `flow`, not zero, is refused, after
 /// its name: `is not an integral: ` and the bracket (or its size, when long) and where it was
-/// taken, under the condition and at the fixed values, where it may vanish only.
+/// taken, under the condition and at the fixed values, where it may vanish only; on a level
+/// set, that it is none there: the bracket is no multiple of its polynomial.
 fn not_an_integral(
     name: &str,
     flow: &Expr,
@@ -616,7 +621,18 @@ fn not_an_integral(
         true => String::new(),
         false => format!(" at {}", at.join(", ")),
     };
-    format!("is not an integral: {bracket}{at}")
+    match &options.on {
+        Some(level) => format!(
+            "is not an integral on the level set {}: {bracket}{at}, which is not a multiple of \
+             P = {}",
+            level.text,
+            level
+                .polynomial()
+                .map(|p| p.render(Style::Unicode))
+                .unwrap_or_default()
+        ),
+        None => format!("is not an integral: {bracket}{at}"),
+    }
 }
 
 /// The filtration by which `--new-only` counts an integral generated. A function's grade is
@@ -1225,11 +1241,17 @@ impl<'a> Stamped<'a> {
                 return Ok(Some(()));
             }
         };
-        // By the monomials, modulo p first and over Q only for a part that is kept; through the
-        // cleared basis the coordinates come over Q, once.
-        let (parts, mut exact_parts) = match locator {
-            Locator::Monomials(problem) => (problem.coordinates_of_parts_mod_p(p), None),
-            Locator::Cleared(_) => match locator.parts(p)? {
+        // By the monomials (of the normal form, on a level set), modulo p first and over Q only
+        // for a part that is kept; through the cleared basis the coordinates come over Q, once.
+        let reduced = match locator {
+            Locator::Monomials(problem) => Some(problem.normal_form(p)?),
+            Locator::Cleared(_) => None,
+        };
+        let (parts, mut exact_parts) = match (locator, &reduced) {
+            (Locator::Monomials(problem), Some(reduced)) => {
+                (problem.coordinates_of_parts_mod_p(reduced), None)
+            }
+            _ => match locator.parts(p)? {
                 None => (Some(None), None),
                 Some((re, im)) => {
                     let fp = modular::to_fp(&re).zip(modular::to_fp(&im));
@@ -1251,7 +1273,13 @@ impl<'a> Stamped<'a> {
                 continue;
             }
             if exact_parts.is_none() {
-                exact_parts = Some(locator.parts(p)?.expect("in the space"));
+                let located = match (locator, &reduced) {
+                    (Locator::Monomials(problem), Some(reduced)) => {
+                        problem.coordinates_of_parts(reduced)
+                    }
+                    _ => locator.parts(p)?,
+                };
+                exact_parts = Some(located.expect("in the space"));
             }
             let (re, im) = exact_parts.as_mut().expect("just formed");
             let v = std::mem::take(if part == 0 { re } else { im });

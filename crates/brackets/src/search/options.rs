@@ -268,7 +268,9 @@ pub struct SearchOptions {
     pub max_products: usize,
     /// The level set the search is restricted to ([`SearchOptions::on`]): the integrals
     /// found are those whose bracket with `H` vanishes there, in normal form modulo its
-    /// polynomial. It takes no condition, no parameters kept symbolic and no `new_only`.
+    /// polynomial. It takes no condition and no parameters kept symbolic; with `new_only`,
+    /// every integral, known or a product, is taken in normal form modulo that polynomial
+    /// (see [`NewIntegrals`](super::NewIntegrals)).
     pub on: Option<LevelSet>,
 }
 

@@ -1,6 +1,8 @@
 //! The linear problem: the space's unknowns, their images `{φ, H}` and the equations
 //! `{F, H} = 0` numbered into rows, split into independent blocks.
 
+use std::borrow::Cow;
+
 use rayon::prelude::*;
 use trigpoly::{
     Expr, GaussianRational, LimitKind, MonomialIndex, Rational, Term, Var, VarKind, Vars,
@@ -631,6 +633,22 @@ impl Problem {
         self.at_values().vanishes(system, flow)
     }
 
+    /// `f` as the space writes it: on a level set its normal form modulo the level set's
+    /// polynomial (at the fixed values, as `f` is), else `f` itself.
+    pub(super) fn normal_form<'f>(&self, f: &'f Expr) -> Result<Cow<'f, Expr>, EngineError> {
+        match &self.level {
+            Some(level) => Ok(Cow::Owned(level.remainder(f)?)),
+            None => Ok(Cow::Borrowed(f)),
+        }
+    }
+
+    /// Whether `f`, a function at the fixed values, is an integral where the search looks:
+    /// its bracket with `H` zero after the condition, or on a level set a multiple of its
+    /// polynomial (the remainder on division by it zero).
+    pub(super) fn is_integral(&self, system: &System, f: &Expr) -> Result<bool, EngineError> {
+        self.at_values().is_integral(system, f, self.level.as_ref())
+    }
+
     /// The problem's fixed Hamiltonian, condition and values.
     fn at_values(&self) -> AtValues<'_> {
         AtValues {
@@ -876,5 +894,21 @@ impl AtValues<'_> {
             Some(clearing) => clearing.apply(flow)?.is_zero(),
             None => flow.is_zero(),
         })
+    }
+
+    /// Whether `f`, a function at the fixed values, is an integral: its bracket with `H`
+    /// ([`AtValues::flow`]) zero, or, on the level set `on`, a multiple of its polynomial
+    /// (the remainder of its division by it zero; a level set takes no condition).
+    pub(super) fn is_integral(
+        &self,
+        system: &System,
+        f: &Expr,
+        on: Option<&OnLevel>,
+    ) -> Result<bool, EngineError> {
+        let flow = self.flow(system, f)?;
+        match on {
+            Some(level) => Ok(level.remainder(&flow)?.is_zero()),
+            None => self.vanishes(system, &flow),
+        }
     }
 }

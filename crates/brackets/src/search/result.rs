@@ -87,6 +87,20 @@ pub struct NormalFormOutside {
 /// The grades form a filtration (a product's grade is at most the sum of its factors'), so
 /// where `cos(a − b)` and `p_b` are integrals, `cos 2(a − b) = 2cos²(a − b) − 1` and
 /// `p_b cos(a − b)` are generated; without angles the grade is the degree.
+///
+/// On a level set `P = 0` ([`SearchOptions::on`](super::SearchOptions::on)) the same holds in
+/// normal form modulo `P`: the known integrals are the named functions (and those given) whose
+/// bracket with `H` is a multiple of `P`, and each of them and each product is reduced modulo
+/// `P` before it is compared with the basis (`Γ·(M·γ)` is then `0`, and `K·Γ`, whose monomial
+/// `M1² M3 γ1²` the space leaves out, has its normal form in the space). The products are
+/// those whose factors' degrees fit the space's bounds, as without a level set; one whose
+/// normal form has a monomial outside the space is not counted, and neither is a product past
+/// the bounds whose normal form falls back into the space. With one total degree bounding the
+/// space (a Lie–Poisson system's Poisson degree) and the leading form of `P` (its part of top
+/// degree) irreducible there is none: the degree of a normal form is the least of the
+/// functions it represents, and leading forms multiply without cancelling. A leading form that
+/// factors allows one (`(M1 − γ1)(M1 + γ1) = 0` on `M1² − γ1² = 0`), and so may degrees
+/// bounded apart (momenta and positions, `x²` replaced through `H = E` by momenta).
 #[derive(Clone, Debug)]
 #[non_exhaustive]
 pub struct NewIntegrals {
