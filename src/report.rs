@@ -14,10 +14,10 @@ use trigpoly::{Expr, Factored, Style};
 
 mod results;
 
-pub(crate) use results::{first_free, outcome_parts, PLACEHOLDERS};
+pub(crate) use results::{first_free, outcome_parts, PLACEHOLDERS, UNKNOWN_OUTCOME};
 pub use results::{
-    ClaimKind, ClaimOutcome, ClaimResult, Excerpt, Fact, ProofResult, RankResult, TableResult,
-    TowerResult,
+    ClaimKind, ClaimOutcome, ClaimResult, Excerpt, Fact, OnLevelSet, ProofResult, RankResult,
+    TableResult, TowerResult,
 };
 
 /// A whole report: a title, sections, and what its closing line summarises.

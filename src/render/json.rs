@@ -46,7 +46,13 @@
 //!                 "witness": ascii | null    (the nonzero value of a proved nonvanishing),
 //!                 "note": string | null,
 //!                 "undecided": string | null   (the limit's message),
-//!                 "seconds": number | null } ],
+//!                 "seconds": number | null,
+//!                 "level_set": { "text" (as printed: "A = 0"), "ascii" (as the file writes
+//!                          it), "polynomial" (P = EXPR − VALUE, ASCII), "quotient" (ASCII Q
+//!                          with lhs − rhs = Q*P, recomputed, for a proved claim; null for a
+//!                          refuted one, whose "residual" is lhs − rhs's remainder on division
+//!                          by P) }   (only on a claim made on a level set, `on` in a system
+//!                          file) } ],
 //!   "equations": [ { "section", "caption", "lines": [ { "lhs", "text", "ascii", "latex",
 //!                 "in_functions": { "text", "ascii", "latex" } | null   (the right side as a
 //!                          polynomial of degree ≤ 3 in H and the named functions, proved, where
@@ -440,7 +446,7 @@ fn in_functions(e: &Expr) -> Value {
 }
 
 fn claim(c: &ClaimResult, section: u32, seconds: Value) -> Value {
-    json!({
+    let mut value = json!({
         "id": c.id,
         "section": section,
         "statement": c.statement,
@@ -462,7 +468,20 @@ fn claim(c: &ClaimResult, section: u32, seconds: Value) -> Value {
         "note": c.note,
         "undecided": c.undecided,
         "seconds": seconds,
-    })
+    });
+    // Only a claim on a level set has the key, so that no other claim's JSON changes.
+    if let (Some(l), Some(map)) = (&c.on_level, value.as_object_mut()) {
+        map.insert(
+            "level_set".into(),
+            json!({
+                "text": l.text,
+                "ascii": l.ascii,
+                "polynomial": l.polynomial.render(Style::Ascii),
+                "quotient": l.quotient.as_ref().map(|q| q.render(Style::Ascii)),
+            }),
+        );
+    }
+    value
 }
 
 fn rank(r: &RankResult, section: u32) -> Value {

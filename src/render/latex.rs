@@ -249,10 +249,13 @@ fn claims_column<'a>(claims: impl IntoIterator<Item = &'a ClaimResult>, names: &
 /// side of the claims set with it, [`claims_column`]) and its condition leave of the row.
 fn claim_rows(c: &ClaimResult, names: &Names, column: usize) -> Vec<String> {
     let math = |s: &str| math_with(s, names);
-    let cond = match &c.condition {
+    let mut cond = match &c.condition {
         Some(cond) => format!(r"\quad\text{{at }} {}", math(cond)),
         None => String::new(),
     };
+    if let Some(l) = &c.on_level {
+        cond.push_str(&format!(r"\quad\text{{on }} {}", math(&l.text)));
+    }
     // A long statement breaks at its sums' signs, the verdict after its last line (moved
     // below it by amsmath when the line has no room). The condition follows the last piece
     // of the right side, which leaves it room (`{Y, Z} = … + 128 at ω = 1, α = 1, β = 1` of a
@@ -296,6 +299,18 @@ fn claim_rows(c: &ClaimResult, names: &Names, column: usize) -> Vec<String> {
         if let Some(f) = c.residual_restated(Style::Latex) {
             rows.extend(broken_rows(" &= ", &f, CLAIM_ROW));
         }
+    }
+    // On a level set: the quotient that proves it, or what the residual is.
+    match c.on_level.as_ref().map(|l| (l, l.proof(Style::Latex))) {
+        Some((l, Some((product, q)))) => rows.push(format!(
+            r"&{} = {product}, \quad Q = {q}",
+            math(&l.difference)
+        )),
+        Some((l, None)) if c.residual.is_some() => rows.push(format!(
+            r"&\quad\text{{(the remainder on division by }} P = {}\text{{: not zero there)}}",
+            l.polynomial.render(Style::Latex)
+        )),
+        _ => {}
     }
     if let (ClaimKind::Nonvanishing, Some(w)) = (c.kind, &c.witness) {
         // A term and the `+` before it are two columns wide at least (as the text's witness).

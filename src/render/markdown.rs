@@ -144,16 +144,29 @@ fn equations(eq: &Equations) -> String {
 }
 
 fn claim(c: &ClaimResult) -> String {
-    let cond = match &c.condition {
+    let mut cond = match &c.condition {
         Some(cond) => format!(" at {}", code(cond)),
         None => String::new(),
     };
+    if let Some(l) = &c.on_level {
+        cond.push_str(&format!(" on {}", code(&l.text)));
+    }
     let mut line = format!(
         "- {}{cond} — **{} {}**",
         code(&c.statement),
         literal(&c.id),
         verdict(c)
     );
+    // On a level set: the quotient that proves it (the residual says the rest).
+    if let Some((l, (product, q))) =
+        (c.on_level.as_ref()).and_then(|l| Some((l, l.proof(Style::Unicode)?)))
+    {
+        line.push_str(&format!(
+            ", {} with {}",
+            code(&format!("{} = {product}", l.difference)),
+            code(&format!("Q = {q}"))
+        ));
+    }
     if let Some(r) = &c.residual {
         line.push_str(&format!(", residual {}", code(&r.to_string())));
         if let Some(e) = &c.excerpt {
@@ -161,6 +174,12 @@ fn claim(c: &ClaimResult) -> String {
         }
         if let Some(f) = c.residual_restated(Style::Unicode) {
             line.push_str(&format!(" = {}", code(&f)));
+        }
+        if let Some(l) = &c.on_level {
+            line.push_str(&format!(
+                " (the remainder on division by {}: not zero on the level set)",
+                code(&format!("P = {}", l.polynomial))
+            ));
         }
     }
     match (c.kind, &c.witness) {

@@ -272,6 +272,14 @@ pub(crate) fn stopped(message: &str) -> String {
     format!("stopped at a limit: {message}")
 }
 
+/// ` on A = 0` after a claim made on a level set, else nothing.
+pub(crate) fn level_set_suffix(c: &crate::report::ClaimResult) -> String {
+    c.on_level
+        .as_ref()
+        .map(|l| format!(" on {}", l.text))
+        .unwrap_or_default()
+}
+
 /// `p_θ = Iω` → ` at p_θ = Iω`; nothing without a condition.
 pub(crate) fn condition_suffix(condition: &Option<String>) -> String {
     condition

@@ -5,7 +5,8 @@ use rayon::prelude::*;
 use trigpoly::{GaussianRational, Style, VarKind};
 
 use super::{
-    condition_suffix, pad, plain, stopped, table_list, verdict, wider_than, width, Options,
+    condition_suffix, level_set_suffix, pad, plain, stopped, table_list, verdict, wider_than,
+    width, Options,
 };
 use crate::report::{
     counted, ClaimKind, ClaimResult, Entry, Equation, Equations, FlowKept, ProofResult, RankResult,
@@ -379,7 +380,12 @@ fn equations(out: &mut Vec<String>, eq: &Equations) {
 
 /// `  statement at condition ........ [C09 proved]`, and what was found when it failed.
 fn verdict_line(out: &mut Vec<String>, c: &ClaimResult) {
-    let head = format!("  {}{}", c.statement, condition_suffix(&c.condition));
+    let head = format!(
+        "  {}{}{}",
+        c.statement,
+        condition_suffix(&c.condition),
+        level_set_suffix(c)
+    );
     let tag = format!("[{} {}]", c.id, verdict(c));
     if width(&head) + 2 <= VERDICT_COLUMN {
         out.push(format!("{}{tag}", pad(&head, VERDICT_COLUMN)));
@@ -426,6 +432,21 @@ fn verdict_line(out: &mut Vec<String>, c: &ClaimResult) {
 
 fn claim(out: &mut Vec<String>, c: &ClaimResult) {
     verdict_line(out, c);
+    // On a level set: the quotient that proves it, or what the residual is.
+    if let Some(l) = &c.on_level {
+        let line = match l.proof(Style::Unicode) {
+            Some((product, q)) => format!("      {} = {product} with Q = {q}", l.difference),
+            None if c.residual.is_some() => format!(
+                "      (the remainder of lhs − rhs on division by P = {}: not zero on the \
+                 level set)",
+                l.polynomial
+            ),
+            None => String::new(),
+        };
+        if !line.is_empty() {
+            out.extend(wrap_sum(&line, WRAP, "        "));
+        }
+    }
     if let (ClaimKind::Nonvanishing, Some(w)) = (c.kind, &c.witness) {
         // A term and the ` + ` before it take four columns at least: a witness of more terms
         // than that allows is not rendered to be measured.

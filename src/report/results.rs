@@ -133,7 +133,7 @@ impl std::fmt::Display for ClaimOutcome {
 /// fn id(claim: ClaimResult) -> String {
 ///     let ClaimResult { id, statement, written, condition, condition_ascii, kind, proved,
 ///         expect, residual, residual_in_functions, witness, note, undecided, excerpt,
-///         seconds } = claim;
+///         on_level, seconds } = claim;
 ///     id
 /// }
 /// ```
@@ -175,8 +175,65 @@ pub struct ClaimResult {
     /// When the residual above is a part of a longer one ([`ClaimResult::excerpt_residual`]): how
     /// much of it is shown.
     pub excerpt: Option<Excerpt>,
+    /// For a claim on a level set (a file's `on = "EXPR = VALUE"`): the level set, and for a
+    /// proved one the quotient that proves it; `lhs − rhs` is then its remainder on division
+    /// by `P` as the residual of a refuted one.
+    pub on_level: Option<OnLevelSet>,
     /// Seconds spent checking it.
     pub seconds: f64,
+}
+
+/// The level set `EXPR = VALUE` a claim is made on, `P = EXPR − VALUE = 0`, and the proof
+/// there: `lhs − rhs = Q·P`. Read by a program, made by the library. A field may be added,
+/// so a pattern of one names the fields it reads and `..`:
+///
+/// ```compile_fail,E0638
+/// fn quotient(on: superint::report::OnLevelSet) -> Option<trigpoly::Expr> {
+///     let superint::report::OnLevelSet { text, ascii, polynomial, difference, quotient } = on;
+///     quotient
+/// }
+/// ```
+#[derive(Clone, Debug)]
+#[non_exhaustive]
+pub struct OnLevelSet {
+    /// The level set as printed, in the file's names (`A = 0`).
+    pub text: String,
+    /// As the file writes it (`A = 0`).
+    pub ascii: String,
+    /// `P = EXPR − VALUE`, expanded (`M1 γ1 + M2 γ2 + M3 γ3`).
+    pub polynomial: Expr,
+    /// `lhs − rhs` as printed (`{K, H}` for `{K, H} = 0`).
+    pub difference: String,
+    /// For a proved claim, `Q` with `lhs − rhs = Q·P`, recomputed (`−c M2`).
+    pub quotient: Option<Expr>,
+}
+
+impl OnLevelSet {
+    /// The level set as printed, `text`, of `P`, for the claim whose `lhs − rhs` prints as
+    /// `difference`; no quotient yet.
+    pub fn new(text: &str, ascii: &str, polynomial: Expr, difference: &str) -> Self {
+        OnLevelSet {
+            text: text.to_string(),
+            ascii: ascii.to_string(),
+            polynomial,
+            difference: difference.to_string(),
+            quotient: None,
+        }
+    }
+
+    /// The proof in `style`, `Q·(M1 γ1 + M2 γ2 + M3 γ3)`, and `Q` in `style`: `None` for a
+    /// claim not proved, and for one whose `lhs − rhs` is zero everywhere (`Q = 0`).
+    pub fn proof(&self, style: Style) -> Option<(String, String)> {
+        let q = self.quotient.as_ref().filter(|q| !q.is_zero())?;
+        let dot = match style {
+            Style::Latex => r"\cdot",
+            _ => "·",
+        };
+        Some((
+            format!("Q{dot}({})", self.polynomial.render(style)),
+            q.render(style),
+        ))
+    }
 }
 
 /// How much of a long expression (a refuted claim's residual, a table's entry) is shown: every
@@ -262,6 +319,7 @@ impl ClaimResult {
             note,
             undecided: None,
             excerpt: None,
+            on_level: None,
             seconds: 0.0,
         }
     }
@@ -304,6 +362,13 @@ impl ClaimResult {
     #[must_use]
     pub fn at(mut self, condition: Option<(String, String)>) -> Self {
         (self.condition, self.condition_ascii) = condition.unzip();
+        self
+    }
+
+    /// The same result on a level set ([`ClaimResult::on_level`]).
+    #[must_use]
+    pub fn on(mut self, level: Option<OnLevelSet>) -> Self {
+        self.on_level = level;
         self
     }
 
@@ -365,6 +430,10 @@ impl ClaimResult {
     }
 }
 
+/// Why a claim whose engine outcome is of a kind this crate does not know is undecided.
+pub(crate) const UNKNOWN_OUTCOME: &str =
+    "the engine's outcome is of a kind this report does not know";
+
 /// What an engine's outcome makes of a claim's result: whether it is proved, a refutation's
 /// residual, and, for an outcome of a kind this crate does not know ([`brackets::Outcome`] is
 /// open to new kinds), the words that leave the claim undecided: neither proved nor refuted.
@@ -372,11 +441,7 @@ pub(crate) fn outcome_parts(outcome: brackets::Outcome) -> (bool, Option<Expr>, 
     match outcome {
         brackets::Outcome::Proved => (true, None, None),
         brackets::Outcome::Refuted { residual } => (false, Some(residual), None),
-        _ => (
-            false,
-            None,
-            Some("the engine's outcome is of a kind this report does not know".into()),
-        ),
+        _ => (false, None, Some(UNKNOWN_OUTCOME.into())),
     }
 }
 
@@ -399,6 +464,7 @@ impl From<brackets::Verdict> for ClaimResult {
             note: None,
             undecided,
             excerpt: None,
+            on_level: None,
             seconds: v.seconds,
         }
     }

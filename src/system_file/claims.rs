@@ -5,6 +5,7 @@
 use std::ops::Range;
 use std::time::Instant;
 
+use brackets::search::LevelReduction;
 use brackets::{level_set_coordinates, rank, rank_restricted, Claim, Condition, EngineError};
 use toml::Spanned;
 use trigpoly::syntax::{Expr as Tree, ExprKind};
@@ -12,11 +13,12 @@ use trigpoly::{AlgebraError, Expr, ParseCause, Span, VarKind};
 
 use super::error::{ErrorKind, FileError};
 use super::model::{ClaimModel, When};
+use super::on_level::{read_level_set, ClaimLevelSet};
 use super::scope::{rewrite_braces, Limit, LimitSettings};
 use super::text::{array_strings, split_top_level, unbalanced_bracket, Source, Text};
 use super::written::Reach;
 use super::LoadedSystem;
-use crate::report::{outcome_parts, ClaimKind, ClaimResult, Expect, RankResult};
+use crate::report::{outcome_parts, ClaimKind, ClaimResult, Expect, RankResult, UNKNOWN_OUTCOME};
 
 /// The claim a certified rank answers ([`LoadedSystem::rank_result`]): a file's rank claim,
 /// or the command line's `superint rank`, whose errors point at the functions it lists.
@@ -70,6 +72,9 @@ pub struct ClaimSpec {
     pub form: ClaimForm,
     /// The condition (substitutions applied after the sides are computed), if any.
     pub condition: Option<Condition>,
+    /// The level set the claim is made on (`on = "A = 0"`), if any: `lhs − rhs` is divided
+    /// by its polynomial.
+    pub on: Option<ClaimLevelSet>,
     /// Proved, or deliberately refuted.
     pub expect: Expect,
     /// Where the claim's text is in its source.
@@ -236,7 +241,40 @@ impl ClaimSpec {
             Some(w) => Some(condition_texts(file, w)?),
         };
         let expect = c.expect.as_ref().map_or(Expect::Proved, |e| *e.get_ref());
-        ClaimSpec::read(file, source, id, text, when, expect, c.claim.span())
+        let on =
+            c.on.as_ref()
+                .map(|on| Text::in_toml(&source.text, on.span(), on.get_ref()));
+        let spec = ClaimSpec::read(file, source, id, text, when, expect, c.claim.span())?;
+        spec.on_level_set(file, on)
+    }
+
+    /// The claim made on the level set written `on`, if any ([`read_level_set`]).
+    fn on_level_set(mut self, file: &LoadedSystem, on: Option<Text>) -> Result<Self, FileError> {
+        let Some(on) = on else {
+            return Ok(self);
+        };
+        let sides = match &self.form {
+            ClaimForm::Identity { lhs, rhs } => Some((lhs, rhs)),
+            ClaimForm::Rank { .. } => None,
+        };
+        let scope = file.scope(file.families.len());
+        let trees = match sides {
+            Some((lhs, rhs)) => Some((
+                scope.tree(&self.source, lhs)?,
+                scope.tree(&self.source, rhs)?,
+            )),
+            None => None,
+        };
+        let level = read_level_set(
+            file,
+            &self.source,
+            &on,
+            &self.form,
+            self.condition.is_some(),
+            trees.as_ref().map(|(l, r)| (l, r)),
+        )?;
+        self.on = Some(level);
+        Ok(self)
     }
 
     /// Reads a claim's text of `source` (`text`, written at `span`) with its condition's
@@ -289,6 +327,7 @@ impl ClaimSpec {
             written: text.value.clone(),
             form,
             condition,
+            on: None,
             expect,
             span,
             source: source.clone(),
@@ -883,6 +922,7 @@ impl ClaimSpec {
         ClaimResult::undecided(&self.id, &self.statement, message)
             .written(&self.written)
             .at(self.condition.as_ref().map(Condition::forms))
+            .on(self.on.as_ref().map(|l| l.shown.clone()))
             .expecting(self.expect)
     }
 }
@@ -900,12 +940,33 @@ impl LoadedSystem {
                 let r_tree = scope.tree(&spec.source, rhs)?;
                 let l = scope.lower(&spec.source, lhs, &l_tree)?;
                 let r = scope.lower(&spec.source, rhs, &r_tree)?;
-                let mut claim = Claim::new(&spec.id, &spec.statement, l, r);
-                if let Some(c) = &spec.condition {
-                    claim = claim.when(c.clone());
-                }
-                let v = claim.check().map_err(|e| at(&e))?;
-                let (proved, residual, undecided) = outcome_parts(v.outcome);
+                let (proved, residual, undecided, on_level) = match &spec.on {
+                    // On a level set: `lhs − rhs` divided by its polynomial.
+                    Some(level) => {
+                        let d = l.checked_sub(&r).map_err(|e| at(&e.into()))?;
+                        let reduced = level.level.reduce(&self.system, &d).map_err(|e| at(&e))?;
+                        let mut shown = level.shown.clone();
+                        let (proved, residual, undecided) = match reduced {
+                            LevelReduction::Vanishes(proof) => {
+                                shown.quotient = Some(proof.quotient);
+                                (true, None, None)
+                            }
+                            LevelReduction::Remainder(r) => (false, Some(r), None),
+                            // A kind this crate does not know leaves the claim undecided.
+                            _ => (false, None, Some(UNKNOWN_OUTCOME.into())),
+                        };
+                        (proved, residual, undecided, Some(shown))
+                    }
+                    None => {
+                        let mut claim = Claim::new(&spec.id, &spec.statement, l, r);
+                        if let Some(c) = &spec.condition {
+                            claim = claim.when(c.clone());
+                        }
+                        let v = claim.check().map_err(|e| at(&e))?;
+                        let (proved, residual, undecided) = outcome_parts(v.outcome);
+                        (proved, residual, undecided, None)
+                    }
+                };
                 // A claim with no bracket (or braced family instance) has as residual its
                 // sides' difference, which the fullest search only restates.
                 let reach = match lhs.value.contains('{') || rhs.value.contains('{') {
@@ -934,6 +995,7 @@ impl LoadedSystem {
                     note: None,
                     undecided,
                     excerpt: None,
+                    on_level,
                     seconds: start.elapsed().as_secs_f64(),
                 })))
             }

@@ -27,7 +27,7 @@ const HOMES: [(&str, &[&str]); 6] = [
     ),
     ("each [[function]] and [[family]]", &["value", "display"]),
     ("each [[family]]", &["indices", "eigenvalue"]),
-    ("each [[claim]]", &["id", "when", "expect"]),
+    ("each [[claim]]", &["id", "when", "on", "expect"]),
 ];
 
 /// Words a claim might be written with, where a claim is one equation in one string.
@@ -79,7 +79,7 @@ mod tests {
                        `claim`";
     const PHASE: &str = "unknown field `{}`, expected one of `coordinates`, `angles`, \
                          `parameters`, `variables`, `denominators`, `radicals`";
-    const CLAIM: &str = "unknown field `{}`, expected one of `id`, `claim`, `when`, `expect`";
+    const CLAIM: &str = "unknown field `{}`, expected one of `id`, `claim`, `when`, `on`, `expect`";
 
     fn hint(form: &str, key: &str) -> Option<String> {
         unknown_key_hint(&form.replace("{}", key))

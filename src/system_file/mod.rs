@@ -50,6 +50,7 @@ mod keys;
 mod load;
 mod model;
 mod names;
+mod on_level;
 mod plot;
 mod pretty;
 mod reports;
@@ -70,6 +71,7 @@ pub use load::{
     load, load_bytes, load_piped, load_str, read_bytes, MAX_DEGREE_CEILING, MAX_FILE_BYTES,
 };
 pub use names::{reserved, unwritable_letter, BadName, PrintedNames, Refusal};
+pub use on_level::ClaimLevelSet;
 pub use plot::{Against, PlotFunctions, PlotInput, StartValue};
 pub use reports::{
     bracket_report, check_each, check_report, expand_report, given_twice, rank_report,

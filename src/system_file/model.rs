@@ -148,6 +148,8 @@ pub(crate) struct ClaimModel {
     pub id: Option<Spanned<String>>,
     pub claim: Spanned<String>,
     pub when: Option<Spanned<When>>,
+    /// The level set the claim is made on, `EXPR = VALUE`.
+    pub on: Option<Spanned<String>>,
     pub expect: Option<Spanned<Expect>>,
 }
 

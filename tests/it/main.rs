@@ -229,6 +229,7 @@ mod closure_denominators;
 mod denominators;
 mod discovery;
 mod latex_input;
+mod level_set_claims;
 mod library;
 mod poisson;
 mod radicals;

@@ -1174,7 +1174,7 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
                 "lhs = \"{A, H}\"\nrhs = \"i*omega*A\"",
             ),
             "bad.toml:14:1: unknown field `lhs`, expected one of `id`, `claim`, `when`, \
-             `expect`\n 14 | lhs = \"{A, H}\"\n    | ^^^\nhint: a claim is one equation in one \
+             `on`, `expect`\n 14 | lhs = \"{A, H}\"\n    | ^^^\nhint: a claim is one equation in one \
              string: claim = \"{L, H} = 0\"",
             check.clone(),
         ),

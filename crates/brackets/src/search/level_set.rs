@@ -88,64 +88,10 @@ impl LevelSet {
     /// `(P)`, decided by the remainder of its division by `P`, at every value of the
     /// parameters where the leading coefficient is a number for them, else at `fixed`.
     pub fn check(&self, system: &System, fixed: &[(Var, Rational)]) -> Result<(), EngineError> {
-        let vars = system.vars();
+        self.check_form(system)?;
         let invalid = |m: String| Err(EngineError::Invalid(m));
-        if let Some(v) = vars
-            .vars()
-            .find(|&v| self.expr.contains(v) && is_excluded(vars.variable(v).kind()))
-        {
-            let kind = match vars.variable(v).kind() {
-                VarKind::Angle => "an angle",
-                VarKind::Denominator => "a denominator",
-                _ => "a radical",
-            };
-            return invalid(format!(
-                "the level set's expression holds {kind}, {}: a level set is a polynomial's \
-                 in the coordinates, momenta and Poisson variables",
-                vars.variable(v).unicode()
-            ));
-        }
-        let order = Self::order(system);
-        if let Some(v) = (order.variables().iter())
-            .find(|&&v| self.expr.exponent_range(v).is_some_and(|(lo, _)| lo < 0))
-        {
-            return invalid(format!(
-                "the level set's expression has a negative power of {}: it must be a \
-                 polynomial",
-                vars.variable(*v).unicode()
-            ));
-        }
-        if !order.variables().iter().any(|&v| self.expr.contains(v)) {
-            return invalid(
-                "the level set's expression holds no variable of phase space: it is a \
-                 constant, whose level is everything or nothing"
-                    .into(),
-            );
-        }
-        if let Some(v) = vars
-            .vars()
-            .find(|&v| self.value.contains(v) && vars.variable(v).kind() != VarKind::Parameter)
-        {
-            return invalid(format!(
-                "the level set's value holds {}: it must be a constant (numbers and \
-                 parameters)",
-                vars.variable(v).unicode()
-            ));
-        }
         let p = self.polynomial()?;
-        if !p.is_real() && (&p * &GaussianRational::i()).is_real() {
-            return invalid(format!(
-                "the level set's polynomial P = {p} is i times a real polynomial: divide EXPR \
-                 and VALUE by i"
-            ));
-        }
-        if !p.is_real() {
-            return invalid(format!(
-                "the level set's polynomial P = {p} is not real (it differs from its \
-                 conjugate): its real level set is where its real and imaginary parts both \
-                 vanish, two equations, and --on takes one; write a real EXPR and VALUE"
-            ));
-        }
+        let order = Self::order(system);
         let (p, at) = match p.leading_term(&order) {
             Ok(_) => (p, ""),
             Err(DivisionRefusal::LeadingCoefficient { .. }) => {
@@ -181,6 +127,138 @@ impl LevelSet {
         }
         Ok(())
     }
+
+    /// The part of [`LevelSet::check`] that reads the level set's form alone, its first
+    /// refusals: an angle, a denominator or a radical in `expr`, a negative power, no phase
+    /// variable, a value that is no constant ([`LevelSet::check_value`]), and `P` not real.
+    pub fn check_form(&self, system: &System) -> Result<(), EngineError> {
+        let vars = system.vars();
+        let invalid = |m: String| Err(EngineError::Invalid(m));
+        if let Some(v) = vars
+            .vars()
+            .find(|&v| self.expr.contains(v) && is_excluded(vars.variable(v).kind()))
+        {
+            let kind = match vars.variable(v).kind() {
+                VarKind::Angle => "an angle",
+                VarKind::Denominator => "a denominator",
+                _ => "a radical",
+            };
+            return invalid(format!(
+                "the level set's expression holds {kind}, {}: a level set is a polynomial's \
+                 in the coordinates, momenta and Poisson variables",
+                vars.variable(v).unicode()
+            ));
+        }
+        let order = Self::order(system);
+        if let Some(v) = (order.variables().iter())
+            .find(|&&v| self.expr.exponent_range(v).is_some_and(|(lo, _)| lo < 0))
+        {
+            return invalid(format!(
+                "the level set's expression has a negative power of {}: it must be a \
+                 polynomial",
+                vars.variable(*v).unicode()
+            ));
+        }
+        if !order.variables().iter().any(|&v| self.expr.contains(v)) {
+            return invalid(
+                "the level set's expression holds no variable of phase space: it is a \
+                 constant, whose level is everything or nothing"
+                    .into(),
+            );
+        }
+        self.check_value(system)?;
+        let p = self.polynomial()?;
+        if !p.is_real() && (&p * &GaussianRational::i()).is_real() {
+            return invalid(format!(
+                "the level set's polynomial P = {p} is i times a real polynomial: divide EXPR \
+                 and VALUE by i"
+            ));
+        }
+        if !p.is_real() {
+            return invalid(format!(
+                "the level set's polynomial P = {p} is not real (it differs from its \
+                 conjugate): its real level set is where its real and imaginary parts both \
+                 vanish, two equations, and --on takes one; write a real EXPR and VALUE"
+            ));
+        }
+        Ok(())
+    }
+
+    /// Refuses a value that holds a phase variable: a level's value is a constant (numbers
+    /// and parameters). Part of [`LevelSet::check`], for a caller that places this refusal at
+    /// the value and the others at the expression.
+    pub fn check_value(&self, system: &System) -> Result<(), EngineError> {
+        let vars = system.vars();
+        match vars
+            .vars()
+            .find(|&v| self.value.contains(v) && vars.variable(v).kind() != VarKind::Parameter)
+        {
+            Some(v) => Err(EngineError::Invalid(format!(
+                "the level set's value holds {}: it must be a constant (numbers and \
+                 parameters)",
+                vars.variable(v).unicode()
+            ))),
+            None => Ok(()),
+        }
+    }
+
+    /// What a system must not have for a level set to be taken on it, said as what is not
+    /// taken (`a system with denominators or radicals`): the normal forms modulo `P` alone are
+    /// not those modulo `P` and the relations of a radical or a denominator. `None` where it
+    /// may.
+    pub fn refused_system(system: &System) -> Option<&'static str> {
+        let space = system.space();
+        (!space.denominator_atoms().is_empty() || !space.radicals().is_empty())
+            .then_some("a system with denominators or radicals")
+    }
+
+    /// Divides `f` by `P` with its parameters (its leading coefficient a number, as
+    /// [`LevelSet::check`] with no fixed value ensures): `f = Q·P`, recomputed, where the
+    /// remainder is zero, so that `f` vanishes on the level set; else the remainder, `f`'s
+    /// normal form modulo `P`, not zero, so that (`P` square-free) `f` does not vanish on all
+    /// of it. A claim on a level set is decided so.
+    pub fn reduce(&self, system: &System, f: &Expr) -> Result<LevelReduction, EngineError> {
+        let p = self.polynomial()?;
+        let (proof, remainder) = proof_by_division(f, &p, &Self::order(system))?;
+        match proof {
+            Some(proof) => Ok(LevelReduction::Vanishes(proof)),
+            None if !remainder.is_zero() => Ok(LevelReduction::Remainder(remainder)),
+            None => Err(EngineError::Invalid(format!(
+                "the division of {f} by P = {p} left no remainder, but f − Q·P, recomputed, \
+                 is not zero"
+            ))),
+        }
+    }
+}
+
+/// What dividing a function by a level set's polynomial `P` shows ([`LevelSet::reduce`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum LevelReduction {
+    /// `f = Q·P`, recomputed: `f` vanishes on the level set.
+    Vanishes(LevelProof),
+    /// `f`'s remainder on division by `P`, its normal form modulo `P`: not zero.
+    Remainder(Expr),
+}
+
+/// The division of `f` by `p` in `order`: the proof that `f` lies in `(p)`, the quotient `Q`,
+/// where the remainder is zero and `f − p·Q`, recomputed, is zero (else `None`), and the
+/// remainder.
+fn proof_by_division(
+    f: &Expr,
+    p: &Expr,
+    order: &DivisionOrder,
+) -> Result<(Option<LevelProof>, Expr), EngineError> {
+    let division = p_divide(f, p, order)?;
+    if !division.remainder.is_zero() {
+        return Ok((None, division.remainder));
+    }
+    let residual = f.checked_sub(&p.checked_mul(&division.quotient)?)?;
+    let proof = residual.is_zero().then(|| LevelProof {
+        quotient: division.quotient,
+        divisor: p.clone(),
+    });
+    Ok((proof, division.remainder))
 }
 
 /// The parameters that `p` holds, in the order of their declaration, at their value in
@@ -402,15 +480,7 @@ impl OnLevel {
     /// parameters, as `flow` is): the quotient `Q`, where the remainder is zero and
     /// `flow − p·Q`, recomputed, is zero; `None` where it is not.
     pub(super) fn prove(&self, flow: &Expr, p: &Expr) -> Result<Option<LevelProof>, EngineError> {
-        let division = p_divide(flow, p, &self.order)?;
-        if !division.remainder.is_zero() {
-            return Ok(None);
-        }
-        let residual = flow.checked_sub(&p.checked_mul(&division.quotient)?)?;
-        Ok(residual.is_zero().then(|| LevelProof {
-            quotient: division.quotient,
-            divisor: p.clone(),
-        }))
+        Ok(proof_by_division(flow, p, &self.order)?.0)
     }
 }
 

@@ -105,7 +105,7 @@ mod result;
 #[cfg(test)]
 mod tests;
 
-pub use level_set::{LevelProof, LevelSet};
+pub use level_set::{LevelProof, LevelReduction, LevelSet};
 pub use options::{SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
 pub(crate) use parameters::{check_parameters, off_vanishing_denominators};
 pub use parameters::{fix_parameters, GENERIC_VALUES};
@@ -353,10 +353,8 @@ fn refuse_beside_level_set(system: &System, options: &SearchOptions) -> Result<(
         Some("a condition besides (search on the level set alone, or under the condition alone)")
     } else if !options.symbolic.is_empty() {
         Some("parameters kept symbolic (fix them, or leave them at 1, and the integrals found are lifted back where they can be)")
-    } else if !system.space().denominator_atoms().is_empty()
-        || !system.space().radicals().is_empty()
-    {
-        Some("a system with denominators or radicals")
+    } else if let Some(what) = LevelSet::refused_system(system) {
+        Some(what)
     } else if options.space.laurent {
         Some("a Laurent space (negative powers of the coordinates)")
     } else {

@@ -1,0 +1,191 @@
+//! Claims made on a level set, `on = "EXPR = VALUE"` in a `[[claim]]`: proved by the quotient
+//! of `lhs − rhs` on division by `P = EXPR − VALUE` (recomputed here), refuted with the
+//! remainder, and every refusal of the level set placed at its line and column.
+
+use superint::prelude::*;
+use superint::report::OnLevelSet;
+
+/// The report's claim `id`, whose `k`-th it is among those of that id.
+fn claim_of<'a>(report: &'a Report, id: &str) -> &'a ClaimResult {
+    report
+        .claims()
+        .into_iter()
+        .find(|c| c.id == id)
+        .unwrap_or_else(|| panic!("no claim {id}"))
+}
+
+fn level_of(c: &ClaimResult) -> &OnLevelSet {
+    c.on_level.as_ref().expect("a claim on a level set")
+}
+
+/// The Goryachev–Chaplygin integral `K` is claimed on the area integral's level set `A = 0`,
+/// in the file's own names: proved, `Q = −c M2`, and `{K, H} − Q·P = 0` recomputed; the same
+/// claim off the level set is refuted, as the file expects.
+#[test]
+fn the_goryachev_chaplygin_integral_is_proved_on_its_level_set() {
+    let file = load_system_file(
+        "systems/goryachev-chaplygin-top.toml",
+        &LimitsOverride::default(),
+    )
+    .expect("loads");
+    let report = check_report([&file]).expect("checked");
+    assert!(report.all_as_expected());
+    let on = claim_of(&report, "gc-on-level");
+    assert!(on.proved && on.residual.is_none(), "{on:?}");
+    let level = level_of(on);
+    assert_eq!(level.text, "A = 0");
+    let p = |s: &str| file.system().parse(s).expect("parses");
+    assert_eq!(level.polynomial, p("M1*gamma1 + M2*gamma2 + M3*gamma3"));
+    let q = level.quotient.as_ref().expect("a quotient");
+    assert_eq!(q, &p("-c*M2"));
+    let flow = p("{M3*(M1^2 + M2^2) + c*M1*gamma3, H}");
+    let product = level.polynomial.checked_mul(q).expect("product");
+    assert!(flow.checked_sub(&product).expect("difference").is_zero());
+    // The text reads like the paper.
+    let text = render(&report, Format::Text, &RenderOptions::default());
+    assert!(
+        text.contains("{K, H} = 0 on A = 0")
+            && text.contains("{K, H} = Q·(M1 γ1 + M2 γ2 + M3 γ3) with Q = −c M2"),
+        "{text}"
+    );
+    let off = claim_of(&report, "gc-off-level");
+    assert!(!off.proved && off.on_level.is_none());
+}
+
+/// The 1:2 oscillator `H = (p_x² + p_y²)/2 + (x² + 4y²)/2` on canonical coordinates.
+const OSCILLATOR: &str = r#"name = "1:2 oscillator"
+hamiltonian = "(p_x^2 + p_y^2)/2 + (x^2 + 4*y^2)/2"
+
+[phase_space]
+coordinates = ["x", "y"]
+
+[[function]]
+name = "C"
+value = "(p_x^2 - x^2)*p_y + 4*x*p_x*y"
+"#;
+
+/// `OSCILLATOR` with the claims `claims` (TOML).
+fn oscillator(claims: &str) -> LoadedSystem {
+    load_system_text(
+        "osc.toml",
+        &format!("{OSCILLATOR}\n{claims}"),
+        &LimitsOverride::default(),
+    )
+    .expect("loads")
+}
+
+/// On the energy level `H = 1`: the cubic integral `C` (everywhere, `Q = 0`), `x² = 2 − p_x² −
+/// p_y² − 4y²` (there alone, `Q = 2`: refuted without `on`), and a false claim refuted with
+/// its remainder, which `expect = "refuted"` takes.
+#[test]
+fn claims_on_an_energy_level_are_proved_or_refuted() {
+    let file = oscillator(
+        r#"
+[[claim]]
+id = "cubic"
+claim = "{C, H} = 0"
+on = "H = 1"
+
+[[claim]]
+id = "level"
+claim = "x^2 = 2 - p_x^2 - p_y^2 - 4*y^2"
+on = "H = 1"
+
+[[claim]]
+id = "off"
+claim = "x^2 = 2 - p_x^2 - p_y^2 - 4*y^2"
+expect = "refuted"
+
+[[claim]]
+id = "false"
+claim = "{x*p_y, H} = 0"
+on = "H = 1"
+expect = "refuted"
+"#,
+    );
+    let report = check_report([&file]).expect("checked");
+    assert!(report.all_as_expected());
+    let p = |s: &str| file.system().parse(s).expect("parses");
+    let cubic = claim_of(&report, "cubic");
+    assert!(cubic.proved);
+    assert!(level_of(cubic).quotient.as_ref().unwrap().is_zero());
+    let level = claim_of(&report, "level");
+    assert!(level.proved);
+    let q = level_of(level).quotient.clone().unwrap();
+    assert_eq!(q, p("2"));
+    let d = p("x^2 - 2 + p_x^2 + p_y^2 + 4*y^2");
+    let product = level_of(level).polynomial.checked_mul(&q).unwrap();
+    assert!(d.checked_sub(&product).unwrap().is_zero());
+    assert!(!claim_of(&report, "off").proved);
+    // {x p_y, H} = p_x p_y − 4xy, whose remainder modulo H − 1 is itself (LM(P) = x²).
+    let false_claim = claim_of(&report, "false");
+    assert!(!false_claim.proved && false_claim.on_level.is_some());
+    assert_eq!(false_claim.residual, Some(p("p_x*p_y - 4*x*y")));
+    // The same false claim expected proved fails the check.
+    let file = oscillator("[[claim]]\nclaim = \"{x*p_y, H} = 0\"\non = \"H = 1\"\n");
+    assert!(!check_report([&file]).unwrap().all_as_expected());
+}
+
+/// Every refusal of a claim's level set is placed at its `on` text (line and column), and
+/// says what is wrong.
+#[test]
+fn level_sets_a_claim_cannot_take_are_refused_where_they_are_written() {
+    let gc = std::fs::read_to_string("systems/goryachev-chaplygin-top.toml").unwrap();
+    let refused = |claim: &str, extra: &str, on: &str| {
+        let text = format!("{gc}\n[[claim]]\nclaim = \"{claim}\"\n{extra}on = \"{on}\"\n");
+        let line = text.lines().count();
+        let err =
+            load_system_text("gc.toml", &text, &LimitsOverride::default()).expect_err("refused");
+        (line, err)
+    };
+    let at_with = |claim: &str, extra: &str, on: &str, column_in_on: usize, message: &str| {
+        let (line, err) = refused(claim, extra, on);
+        // `on = "` is 6 columns.
+        assert_eq!(
+            err.line_col(),
+            Some((line, 6 + column_in_on)),
+            "{on}: {err}"
+        );
+        assert_eq!(err.kind, ErrorKind::Condition, "{on}: {err}");
+        assert!(err.message.contains(message), "{on}: {err}");
+    };
+    let at = |on: &str, column_in_on: usize, message: &str| {
+        at_with("{K, H} = 0", "", on, column_in_on, message)
+    };
+    at("A", 1, "there is no '=' here");
+    at("A = 0 = 1", 7, "with one '='");
+    at(" = 0", 2, "no expression before '='");
+    at("A = ", 3, "no value after '='");
+    at("M1/gamma3 = 0", 1, "negative power of γ3");
+    at("M1 = 0", 1, "the flow of H leaves the level set");
+    at("A^2 = 0", 1, "write each factor of P once");
+    at("M1 + i*gamma1 = 0", 1, "is not real");
+    at(
+        "c*A = 0",
+        1,
+        "has a parameter in the coefficient of its leading monomial",
+    );
+    at("gamma1 = M1", 10, "the level set's value holds M1");
+    at("c = 1", 1, "no variable of phase space");
+    at_with(
+        "rank(H, K) = 2",
+        "",
+        "A = 0",
+        1,
+        "`on` takes an identity `lhs = rhs`, not a rank",
+    );
+    at_with(
+        "{K, H} = 0",
+        "when = \"c = 2\"\n",
+        "A = 0",
+        1,
+        "a claim takes `on` or `when`, not both",
+    );
+    // An angle, on the harmonic rotor.
+    let rotor = std::fs::read_to_string("systems/harmonic-rotor.toml").unwrap();
+    let text = format!("{rotor}\n[[claim]]\nclaim = \"{{L, H}} = 0\"\non = \"cos(theta) = 0\"\n");
+    let err =
+        load_system_text("rotor.toml", &text, &LimitsOverride::default()).expect_err("refused");
+    assert_eq!(err.line_col(), Some((text.lines().count(), 7)), "{err}");
+    assert!(err.message.contains("holds an angle, θ"), "{err}");
+}
