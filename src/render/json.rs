@@ -51,8 +51,8 @@
 //!                          it), "polynomial" (P = EXPR − VALUE, ASCII), "quotient" (ASCII Q
 //!                          with lhs − rhs = Q*P, recomputed, for a proved claim; null for a
 //!                          refuted one, whose "residual" is lhs − rhs's remainder on division
-//!                          by P) }   (only on a claim made on a level set, `on` in a system
-//!                          file) } ],
+//!                          by P: lhs − rhs is not a multiple of P) }   (only on a claim made
+//!                          on a level set, `on` in a system file) } ],
 //!   "equations": [ { "section", "caption", "lines": [ { "lhs", "text", "ascii", "latex",
 //!                 "in_functions": { "text", "ascii", "latex" } | null   (the right side as a
 //!                          polynomial of degree ≤ 3 in H and the named functions, proved, where

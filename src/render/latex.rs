@@ -307,7 +307,7 @@ fn claim_rows(c: &ClaimResult, names: &Names, column: usize) -> Vec<String> {
             math(&l.difference)
         )),
         Some((l, None)) if c.residual.is_some() => rows.push(format!(
-            r"&\quad\text{{(the remainder on division by }} P = {}\text{{: not zero there)}}",
+            r"&\quad\text{{(the remainder on division by }} P = {}\text{{: not a multiple of }} P\text{{)}}",
             l.polynomial.render(Style::Latex)
         )),
         _ => {}

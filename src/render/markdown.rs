@@ -177,7 +177,7 @@ fn claim(c: &ClaimResult) -> String {
         }
         if let Some(l) = &c.on_level {
             line.push_str(&format!(
-                " (the remainder on division by {}: not zero on the level set)",
+                " (the remainder on division by {}: not a multiple of P)",
                 code(&format!("P = {}", l.polynomial))
             ));
         }

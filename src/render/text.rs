@@ -437,8 +437,8 @@ fn claim(out: &mut Vec<String>, c: &ClaimResult) {
         let line = match l.proof(Style::Unicode) {
             Some((product, q)) => format!("      {} = {product} with Q = {q}", l.difference),
             None if c.residual.is_some() => format!(
-                "      (the remainder of lhs − rhs on division by P = {}: not zero on the \
-                 level set)",
+                "      (lhs − rhs is not a multiple of P = {}: the residual is its remainder \
+                 on division by P)",
                 l.polynomial
             ),
             None => String::new(),

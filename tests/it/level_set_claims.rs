@@ -189,3 +189,52 @@ fn level_sets_a_claim_cannot_take_are_refused_where_they_are_written() {
     assert_eq!(err.line_col(), Some((text.lines().count(), 7)), "{err}");
     assert!(err.message.contains("holds an angle, θ"), "{err}");
 }
+
+/// A rotation, `H = x p_y − y p_x`, with a parameter `a`, and the claims `claims` (TOML).
+fn rotation(claims: &str) -> Result<LoadedSystem, FileError> {
+    let header = "name = \"rotation\"\nhamiltonian = \"x*p_y - y*p_x\"\n\n[phase_space]\n\
+                  coordinates = [\"x\", \"y\"]\nparameters = [\"a\"]\n\n";
+    load_system_text(
+        "rotation.toml",
+        &format!("{header}{claims}"),
+        &LimitsOverride::default(),
+    )
+}
+
+/// The rotation keeps every circle `x² + y² = a`. `x = 0` on it is refuted
+/// with the remainder `x`, which says only that `x` is not a multiple of `P = x² + y² − a`:
+/// at `a = 0` the real level set is the origin, where `x` is zero, and at `a < 0` it is
+/// empty. The report says what the remainder proves, not that `x` is nonzero on the level set.
+#[test]
+fn a_refutation_on_a_level_set_says_only_that_the_difference_is_no_multiple_of_p() {
+    let file = rotation(
+        r#"
+[[claim]]
+id = "on-circle"
+claim = "x^2 = a - y^2"
+on = "x^2 + y^2 = a"
+
+[[claim]]
+id = "axis"
+claim = "x = 0"
+on = "x^2 + y^2 = a"
+expect = "refuted"
+"#,
+    )
+    .expect("loads");
+    let report = check_report([&file]).expect("checked");
+    assert!(report.all_as_expected());
+    let p = |s: &str| file.system().parse(s).expect("parses");
+    let on_circle = claim_of(&report, "on-circle");
+    assert_eq!(level_of(on_circle).quotient, Some(p("1")));
+    let axis = claim_of(&report, "axis");
+    assert_eq!(axis.residual, Some(p("x")));
+    for format in [Format::Text, Format::Markdown, Format::Latex] {
+        let shown = render(&report, format, &RenderOptions::default());
+        assert!(shown.contains("not a multiple of"), "{shown}");
+        assert!(
+            !shown.contains("not zero on the level set") && !shown.contains("not zero there"),
+            "{shown}"
+        );
+    }
+}

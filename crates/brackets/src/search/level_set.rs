@@ -215,8 +215,12 @@ impl LevelSet {
     /// Divides `f` by `P` with its parameters (its leading coefficient a number, as
     /// [`LevelSet::check`] with no fixed value ensures): `f = Q·P`, recomputed, where the
     /// remainder is zero, so that `f` vanishes on the level set; else the remainder, `f`'s
-    /// normal form modulo `P`, not zero, so that (`P` square-free) `f` does not vanish on all
-    /// of it. A claim on a level set is decided so.
+    /// normal form modulo `P`, not zero, so that `f` is not a multiple of `P`. That is all a
+    /// remainder proves: it shows `f` not zero somewhere on the complex level set only at the
+    /// values of the parameters where `P` is square-free (shown at 1 by [`LevelSet::check`],
+    /// which leaves out values such as `a = 0` of `x² = a`) and the remainder is not zero, and
+    /// the real level set may be smaller still (`x² + y² = 0` is a point). A claim on a level
+    /// set is decided so.
     pub fn reduce(&self, system: &System, f: &Expr) -> Result<LevelReduction, EngineError> {
         let p = self.polynomial()?;
         let (proof, remainder) = proof_by_division(f, &p, &Self::order(system))?;
