@@ -126,7 +126,7 @@ pub(crate) fn read_level_set(
         )));
     }
     level
-        .check(system, &[])
+        .check_for_every_value(system)
         .map_err(|e| at_expr(e.to_string()))?;
     let (lhs_shown, rhs_shown) = (file.pretty(sides.0), file.pretty(sides.1));
     let difference = match rhs_shown.as_str() {

@@ -238,3 +238,37 @@ expect = "refuted"
         );
     }
 }
+
+/// A claim holds for every value of the parameters, so its level set's polynomial need only
+/// be square-free as a polynomial with them: `(x² + y²)² − (a − 1)(x² + y²)` has the repeated
+/// factor `(x² + y²)²` at `a = 1`, where a search would take it, and none at `a = 2`; the
+/// claim on it is read and decided. A square, `(x² + y² − a)²`, is refused at every value
+/// tried, and the refusal names `P` with its parameter.
+#[test]
+fn a_claims_level_set_is_square_free_for_all_but_special_values_of_its_parameters() {
+    let rotation = |claim: &str, on: &str| {
+        rotation(&format!("[[claim]]\nclaim = \"{claim}\"\non = \"{on}\"\n"))
+    };
+    let file = rotation(
+        "(x^2 + y^2)^2 = (a - 1)*(x^2 + y^2)",
+        "(x^2 + y^2)^2 - (a - 1)*(x^2 + y^2) = 0",
+    )
+    .expect("square-free for a ≠ 1");
+    let report = check_report([&file]).expect("checked");
+    assert!(report.all_as_expected());
+    let c = &report.claims()[0];
+    assert_eq!(
+        level_of(c).quotient,
+        Some(file.system().parse("1").unwrap())
+    );
+    let err = rotation("x = 0", "(x^2 + y^2 - a)^2 = 0").expect_err("a square");
+    assert_eq!(err.line_col(), Some((10, 7)), "{err}");
+    assert!(
+        err.message
+            .contains("P = x⁴ + 2x²y² − 2ax² + y⁴ − 2ay² + a²")
+            && err
+                .message
+                .contains("at each of 4 values of its parameters"),
+        "{err}"
+    );
+}

@@ -89,6 +89,29 @@ impl LevelSet {
     /// parameters where the leading coefficient is a number for them, else at `fixed`.
     pub fn check(&self, system: &System, fixed: &[(Var, Rational)]) -> Result<(), EngineError> {
         self.check_form(system)?;
+        self.check_square_free_and_kept(system, fixed, false)
+    }
+
+    /// [`LevelSet::check`] for a claim, which holds for every value of the parameters, with no
+    /// value fixed: the same refusals, but `P` is shown square-free as a polynomial with its
+    /// parameters, so for all of their values but those of a proper algebraic subset (`a = 0`
+    /// of `x² = a`), by a square-free restriction to a line at any one of four values of
+    /// them (all at 1, then the `j`-th at `k^j` for `k = 2, 3, 4`), where a search takes them
+    /// at 1 alone: `(x² + y²)² − (a − 1)(x² + y²)` is square-free, though not at `a = 1`.
+    pub fn check_for_every_value(&self, system: &System) -> Result<(), EngineError> {
+        self.check_form(system)?;
+        self.check_square_free_and_kept(system, &[], true)
+    }
+
+    /// The rest of [`LevelSet::check`], after its form: the leading coefficient, `P` square-free
+    /// (at the searched values of the parameters, or at any of [`PARAMETER_POINTS`] values of
+    /// them `for_every_value`), and the flow of `H` keeping the level set.
+    fn check_square_free_and_kept(
+        &self,
+        system: &System,
+        fixed: &[(Var, Rational)],
+        for_every_value: bool,
+    ) -> Result<(), EngineError> {
         let invalid = |m: String| Err(EngineError::Invalid(m));
         let p = self.polynomial()?;
         let order = Self::order(system);
@@ -104,7 +127,25 @@ impl LevelSet {
             Err(e) => return Err(refusal(&p, e)),
         };
         let p_searched = fix_parameters(&p, &level_parameter_values(&p, fixed))?;
-        if !has_no_repeated_factor(&p_searched, &order) {
+        let square_free_elsewhere = || {
+            (2..=PARAMETER_POINTS).any(|k| {
+                fix_parameters(&p, &parameter_point(&p, k))
+                    .is_ok_and(|at| has_no_repeated_factor(&at, &order))
+            })
+        };
+        let square_free = has_no_repeated_factor(&p_searched, &order)
+            || (for_every_value && square_free_elsewhere());
+        if !square_free && for_every_value && p_searched != p {
+            return invalid(format!(
+                "the level set's polynomial P = {p} has a repeated root on every one of the \
+                 {LINES_TRIED} lines through phase space tried, at each of {PARAMETER_POINTS} \
+                 values of its parameters (all at 1, then the j-th at k^j for k up to \
+                 {PARAMETER_POINTS}), as a polynomial with a repeated factor has: the functions \
+                 on its level set are then not the normal forms modulo P; write each factor of P \
+                 once (A = 0 for A^2 = 0)"
+            ));
+        }
+        if !square_free {
             return invalid(format!(
                 "the level set's polynomial P = {p_searched} has a repeated root on every one of \
                  the {LINES_TRIED} lines through phase space tried, as a polynomial with a \
@@ -217,8 +258,9 @@ impl LevelSet {
     /// remainder is zero, so that `f` vanishes on the level set; else the remainder, `f`'s
     /// normal form modulo `P`, not zero, so that `f` is not a multiple of `P`. That is all a
     /// remainder proves: it shows `f` not zero somewhere on the complex level set only at the
-    /// values of the parameters where `P` is square-free (shown at 1 by [`LevelSet::check`],
-    /// which leaves out values such as `a = 0` of `x² = a`) and the remainder is not zero, and
+    /// values of the parameters where `P` is square-free (shown for all values but a proper
+    /// algebraic subset by [`LevelSet::check_for_every_value`], which leaves out `a = 0` of
+    /// `x² = a`) and the remainder is not zero, and
     /// the real level set may be smaller still (`x² + y² = 0` is a point). A claim on a level
     /// set is decided so.
     pub fn reduce(&self, system: &System, f: &Expr) -> Result<LevelReduction, EngineError> {
@@ -275,6 +317,21 @@ pub(super) fn level_parameter_values(p: &Expr, given: &[(Var, Rational)]) -> Vec
             Some((_, x)) => (v, x.clone()),
             None => (v, Rational::one()),
         })
+        .collect()
+}
+
+/// At how many values of its parameters [`LevelSet::check_for_every_value`] tries to show a
+/// level set's polynomial square-free.
+const PARAMETER_POINTS: u32 = 4;
+
+/// The `k`-th value of the parameters that `p` holds at which
+/// [`LevelSet::check_for_every_value`] tries it: the `j`-th of them (from 1, in the order of
+/// their declaration) at `k^j`, so all at 1 for `k = 1`, apart for `k > 1`.
+fn parameter_point(p: &Expr, k: u32) -> Vec<(Var, Rational)> {
+    level_parameter_values(p, &[])
+        .into_iter()
+        .zip(1u32..)
+        .map(|((v, _), j)| (v, Rational::from(i64::from(k).saturating_pow(j))))
         .collect()
 }
 
