@@ -56,10 +56,11 @@ pub(crate) fn read_level_set(
         return Err(refuse(
             text,
             whole,
-            "a claim takes `on` or `when`, not both: `when` substitutes into lhs − rhs, which \
-             the bracket with H does not commute with, so the level set would be checked on \
-             another flow; state the claim on the level set alone, or under the condition \
-             alone"
+            "a claim takes `on` or `when`, not both: a `when` that sets a phase variable \
+             substitutes into lhs − rhs, which the bracket with H does not commute with, so the \
+             level set would be checked on another flow, and one that fixes parameters alone is \
+             not taken either (the level set and its claim are checked for every value of \
+             them); state the claim on the level set alone, or under the condition alone"
                 .into(),
         ));
     }
@@ -110,7 +111,7 @@ pub(crate) fn read_level_set(
     level.check_value(system).map_err(at_value)?;
     let at_expr = |why: String| refuse(&lhs, lhs.trimmed_span(), why);
     level
-        .check_form(system)
+        .check_form(system, "`on`")
         .map_err(|e| at_expr(e.to_string()))?;
     let p = level.polynomial().map_err(|e| at_expr(e.to_string()))?;
     // A claim holds for every value of the parameters: none may be fixed to divide by.

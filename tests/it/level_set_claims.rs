@@ -160,6 +160,7 @@ fn level_sets_a_claim_cannot_take_are_refused_where_they_are_written() {
     at("M1 = 0", 1, "the flow of H leaves the level set");
     at("A^2 = 0", 1, "write each factor of P once");
     at("M1 + i*gamma1 = 0", 1, "is not real");
+    at("M1 + i*gamma1 = 0", 1, "and `on` takes one");
     at(
         "c*A = 0",
         1,
@@ -180,6 +181,15 @@ fn level_sets_a_claim_cannot_take_are_refused_where_they_are_written() {
         "A = 0",
         1,
         "a claim takes `on` or `when`, not both",
+    );
+    // A condition that fixes a parameter alone commutes with the bracket: the refusal says
+    // why it is refused all the same, not that it does not commute.
+    at_with(
+        "{K, H} = 0",
+        "when = \"c = 2\"\n",
+        "A = 0",
+        1,
+        "one that fixes parameters alone is not taken either",
     );
     // An angle, on the harmonic rotor.
     let rotor = std::fs::read_to_string("systems/harmonic-rotor.toml").unwrap();

@@ -88,7 +88,7 @@ impl LevelSet {
     /// `(P)`, decided by the remainder of its division by `P`, at every value of the
     /// parameters where the leading coefficient is a number for them, else at `fixed`.
     pub fn check(&self, system: &System, fixed: &[(Var, Rational)]) -> Result<(), EngineError> {
-        self.check_form(system)?;
+        self.check_form(system, "--on")?;
         self.check_square_free_and_kept(system, fixed, false)
     }
 
@@ -99,7 +99,7 @@ impl LevelSet {
     /// them (all at 1, then the `j`-th at `k^j` for `k = 2, 3, 4`), where a search takes them
     /// at 1 alone: `(x² + y²)² − (a − 1)(x² + y²)` is square-free, though not at `a = 1`.
     pub fn check_for_every_value(&self, system: &System) -> Result<(), EngineError> {
-        self.check_form(system)?;
+        self.check_form(system, "`on`")?;
         self.check_square_free_and_kept(system, &[], true)
     }
 
@@ -171,8 +171,9 @@ impl LevelSet {
 
     /// The part of [`LevelSet::check`] that reads the level set's form alone, its first
     /// refusals: an angle, a denominator or a radical in `expr`, a negative power, no phase
-    /// variable, a value that is no constant ([`LevelSet::check_value`]), and `P` not real.
-    pub fn check_form(&self, system: &System) -> Result<(), EngineError> {
+    /// variable, a value that is no constant ([`LevelSet::check_value`]), and `P` not real,
+    /// whose refusal says that `taken_by` (`--on`, or a claim's `` `on` ``) takes one equation.
+    pub fn check_form(&self, system: &System, taken_by: &str) -> Result<(), EngineError> {
         let vars = system.vars();
         let invalid = |m: String| Err(EngineError::Invalid(m));
         if let Some(v) = vars
@@ -219,7 +220,7 @@ impl LevelSet {
             return invalid(format!(
                 "the level set's polynomial P = {p} is not real (it differs from its \
                  conjugate): its real level set is where its real and imaginary parts both \
-                 vanish, two equations, and --on takes one; write a real EXPR and VALUE"
+                 vanish, two equations, and {taken_by} takes one; write a real EXPR and VALUE"
             ));
         }
         Ok(())
