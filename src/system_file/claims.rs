@@ -249,7 +249,11 @@ impl ClaimSpec {
     }
 
     /// The claim made on the level set written `on`, if any ([`read_level_set`]).
-    fn on_level_set(mut self, file: &LoadedSystem, on: Option<Text>) -> Result<Self, FileError> {
+    pub(super) fn on_level_set(
+        mut self,
+        file: &LoadedSystem,
+        on: Option<Text>,
+    ) -> Result<Self, FileError> {
         let Some(on) = on else {
             return Ok(self);
         };

@@ -218,18 +218,7 @@ impl LoadedSystem {
         claim: &str,
         when: Option<&str>,
     ) -> Result<&mut ClaimSpec, FileError> {
-        // An id that is refused is no name for the text: its errors are of `<claim>`.
-        if id.trim().is_empty() {
-            return Err(FileError::new(
-                ErrorKind::Claim,
-                "<claim>",
-                "a claim's id is empty",
-            ));
-        }
-        if let Some((_, why)) = super::names::unshowable("a claim's id", id, false) {
-            return Err(FileError::new(ErrorKind::Claim, "<claim>", why));
-        }
-        let origin = format!("<claim {id}>");
+        let origin = claim_origin(id)?;
         let (source, claim_at, when_at) = two_lines(&origin, claim, when);
         let text = Text::within(&source, claim_at.clone());
         let when = when_at.map(|at| Text::within(&source, at).split(','));
@@ -242,6 +231,54 @@ impl LoadedSystem {
             Expect::Proved,
             claim_at,
         )?;
+        self.claims.push(spec);
+        Ok(self.claims.last_mut().expect("just pushed"))
+    }
+
+    /// Adds a claim made on a level set, as a `[[claim]]` with `on = "EXPR = VALUE"` declares
+    /// one: `lhs = rhs` (brackets, family instances, the file's functions in `EXPR`), proved
+    /// where `lhs − rhs` is a multiple of `P = EXPR − VALUE`, by its quotient `Q`
+    /// ([`ClaimResult::on_level`](crate::report::ClaimResult::on_level)), and refuted with
+    /// its remainder on division by `P` otherwise. The level set is read and checked at once,
+    /// as the file's are (real, square-free, kept by the flow of `H`, a number as its leading
+    /// coefficient). Errors in the claim are at line 1 of `<claim ID>`, in the level set at
+    /// line 2; an id that is refused is reported of `<claim>`.
+    ///
+    /// ```
+    /// use superint::prelude::*;
+    ///
+    /// let mut gc = load_system_file(
+    ///     "systems/goryachev-chaplygin-top.toml",
+    ///     &LimitsOverride::default(),
+    /// )?;
+    /// gc.add_claim_on("mine", "{K, H} = 0", "A = 0")?;
+    /// let report = check_report([&gc])?;
+    /// let mine = report.claims().into_iter().find(|c| c.id == "mine").unwrap();
+    /// assert!(mine.proved);
+    /// let q = mine.on_level.as_ref().and_then(|l| l.quotient.clone());
+    /// assert_eq!(q, Some(gc.system().parse("-c*M2")?));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn add_claim_on(
+        &mut self,
+        id: &str,
+        claim: &str,
+        on: &str,
+    ) -> Result<&mut ClaimSpec, FileError> {
+        let origin = claim_origin(id)?;
+        let (source, claim_at, on_at) = two_lines(&origin, claim, Some(on));
+        let text = Text::within(&source, claim_at.clone());
+        let on = on_at.map(|at| Text::within(&source, at));
+        let spec = ClaimSpec::read(
+            self,
+            &source,
+            id.to_string(),
+            text,
+            None,
+            Expect::Proved,
+            claim_at,
+        )?
+        .on_level_set(self, on)?;
         self.claims.push(spec);
         Ok(self.claims.last_mut().expect("just pushed"))
     }
@@ -297,6 +334,22 @@ impl LoadedSystem {
 fn check_display_in(origin: &str, display: &str) -> Result<(), FileError> {
     let source = Source::program(origin, display);
     check_display(&source, &Text::whole(&source), 0..display.len())
+}
+
+/// The origin of a claim added by a program, `<claim ID>`, once its id is shown refused or
+/// not: an id that is refused is no name for the text, and its errors are of `<claim>`.
+fn claim_origin(id: &str) -> Result<String, FileError> {
+    if id.trim().is_empty() {
+        return Err(FileError::new(
+            ErrorKind::Claim,
+            "<claim>",
+            "a claim's id is empty",
+        ));
+    }
+    if let Some((_, why)) = super::names::unshowable("a claim's id", id, false) {
+        return Err(FileError::new(ErrorKind::Claim, "<claim>", why));
+    }
+    Ok(format!("<claim {id}>"))
 }
 
 /// One source for a text and an optional second one, on the line after it: the source and

@@ -249,6 +249,40 @@ expect = "refuted"
     }
 }
 
+/// A program states a claim on a level set as a file does ([`LoadedSystem::add_claim_on`]):
+/// proved by its quotient, refuted with its remainder, and a level set it cannot take refused
+/// at line 2 of `<claim ID>`, where it is written.
+#[test]
+fn a_program_states_a_claim_on_a_level_set() {
+    let mut gc = load_system_file(
+        "systems/goryachev-chaplygin-top.toml",
+        &LimitsOverride::default(),
+    )
+    .expect("loads");
+    gc.add_claim_on("mine", "{K, H} = 0", "A = 0")
+        .expect("read");
+    gc.add_claim_on("off", "{M1, H} = 0", "A = 0")
+        .expect("read")
+        .expect = Expect::Refuted;
+    let report = check_report([&gc]).expect("checked");
+    assert!(report.all_as_expected());
+    let p = |s: &str| gc.system().parse(s).expect("parses");
+    let mine = claim_of(&report, "mine");
+    assert!(mine.proved);
+    assert_eq!(level_of(mine).quotient, Some(p("-c*M2")));
+    let off = claim_of(&report, "off");
+    assert!(!off.proved && off.residual.is_some() && off.on_level.is_some());
+    let err = gc.add_claim_on("bad", "{K, H} = 0", "M1 = 0").unwrap_err();
+    assert_eq!(err.origin, "<claim bad>", "{err}");
+    assert_eq!(err.line_col(), Some((2, 1)), "{err}");
+    assert!(
+        err.message.contains("the flow of H leaves the level set"),
+        "{err}"
+    );
+    let err = gc.add_claim_on("", "{K, H} = 0", "A = 0").unwrap_err();
+    assert_eq!(err.origin, "<claim>", "{err}");
+}
+
 /// A claim holds for every value of the parameters, so its level set's polynomial need only
 /// be square-free as a polynomial with them: `(x² + y²)² − (a − 1)(x² + y²)` has the repeated
 /// factor `(x² + y²)²` at `a = 1`, where a search would take it, and none at `a = 2`; the
