@@ -221,16 +221,13 @@ impl OnLevelSet {
         }
     }
 
-    /// The proof in `style`, `Q·(M1 γ1 + M2 γ2 + M3 γ3)`, and `Q` in `style`: `None` for a
-    /// claim not proved, and for one whose `lhs − rhs` is zero everywhere (`Q = 0`).
+    /// The proof in `style`, `Q (M1 γ1 + M2 γ2 + M3 γ3)` (a product by juxtaposition, as the
+    /// paper and `search --on`'s `{I4, H} = Q4 (…)` write it), and `Q` in `style`: `None` for
+    /// a claim not proved, and for one whose `lhs − rhs` is zero everywhere (`Q = 0`).
     pub fn proof(&self, style: Style) -> Option<(String, String)> {
         let q = self.quotient.as_ref().filter(|q| !q.is_zero())?;
-        let dot = match style {
-            Style::Latex => r"\cdot",
-            _ => "·",
-        };
         Some((
-            format!("Q{dot}({})", self.polynomial.render(style)),
+            format!("Q ({})", self.polynomial.render(style)),
             q.render(style),
         ))
     }

@@ -41,13 +41,15 @@ fn the_goryachev_chaplygin_integral_is_proved_on_its_level_set() {
     let flow = p("{M3*(M1^2 + M2^2) + c*M1*gamma3, H}");
     let product = level.polynomial.checked_mul(q).expect("product");
     assert!(flow.checked_sub(&product).expect("difference").is_zero());
-    // The text reads like the paper.
+    // The text reads like the paper, a product by juxtaposition as search --on writes it.
     let text = render(&report, Format::Text, &RenderOptions::default());
     assert!(
         text.contains("{K, H} = 0 on A = 0")
-            && text.contains("{K, H} = Q·(M1 γ1 + M2 γ2 + M3 γ3) with Q = −c M2"),
+            && text.contains("{K, H} = Q (M1 γ1 + M2 γ2 + M3 γ3) with Q = −c M2"),
         "{text}"
     );
+    let latex = render(&report, Format::Latex, &RenderOptions::default());
+    assert!(!latex.contains(r"\cdot"), "{latex}");
     let off = claim_of(&report, "gc-off-level");
     assert!(!off.proved && off.on_level.is_none());
 }
