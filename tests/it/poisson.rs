@@ -1074,3 +1074,40 @@ fn new_integrals_on_a_level_set_are_told_modulo_its_polynomial() {
         "{stderr}"
     );
 }
+
+/// On a level set the products of `--new-only` are held to the space's largest total degree,
+/// not to each of its bounds: a normal form modulo `P` has at most its product's total degree
+/// but may move it between the momenta and the positions (`x² = 2 − p_x² − p_y² − y²` on the
+/// 1:1 oscillator's `H = 1`). With momenta and positions of degree `≤ 2` each, the products of
+/// total degree `≤ 4` are formed, 15 (1 where each bound held them), and `L` and
+/// `x y + p_x p_y` stay new beside the known `H_x`.
+#[test]
+fn products_on_a_level_set_are_held_to_the_total_degree() {
+    let oscillator = crate::scratch_text(
+        "level-set-total-degree",
+        "oscillator.toml",
+        "name = \"1:1 oscillator\"\nhamiltonian = \"(p_x^2 + p_y^2 + x^2 + y^2)/2\"\n\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\n\n\
+         [[function]]\nname = \"Hx\"\nvalue = \"(p_x^2 + x^2)/2\"\n",
+    );
+    let o = superint(&[
+        "search",
+        oscillator.to_str().unwrap(),
+        "--on",
+        "H = 1",
+        "--momenta-degree",
+        "2",
+        "--positions-degree",
+        "2",
+        "--new-only",
+        "--no-timings",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let v: Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    let search = &v["searches"][0];
+    assert_eq!(search["new_only"]["products"], 15);
+    assert_eq!(search["new_only"]["known"], serde_json::json!(["Hx"]));
+    assert_eq!(search["shown"].as_array().map(Vec::len), Some(2));
+}

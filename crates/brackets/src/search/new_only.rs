@@ -746,6 +746,13 @@ impl Size {
         }
     }
 
+    /// Its degree in the momenta, the coordinates and the Poisson variables together.
+    fn total_degree(&self) -> i64 {
+        self.momenta
+            .saturating_add(self.coordinates)
+            .saturating_add(self.poisson)
+    }
+
     /// Whether it has a positive degree (a factor that is no function of the angles alone).
     fn has_degree(&self) -> bool {
         self.momenta > 0 || self.coordinates > 0 || self.poisson > 0
@@ -908,7 +915,8 @@ pub(super) fn without_parameter_multiples(
 pub(super) type StampedVectors = Vec<(i64, SparseVec<Rational>)>;
 
 /// The span of `vectors` (`(stamp, coordinates)`) and of the products of `gens` whose sizes
-/// fit `bounds` (the coordinates' degree only unless `laurent`), in `span`: its kept vectors by
+/// fit `bounds` (the coordinates' degree only unless `laurent`; on a level set, the total
+/// degree, [`Spanning::fits`]), in `span`: its kept vectors by
 /// increasing stamp and how many products were formed, or `None` when a denominator vanishes
 /// modulo p. The products stop once the span has `dimension`, that of the integrals, and
 /// fail past `max_products`.
@@ -925,6 +933,7 @@ pub(super) fn span_of_products(
         locator,
         bounds,
         laurent,
+        on_level: matches!(locator, Locator::Monomials(problem) if problem.level.is_some()),
         dimension,
         span: &mut span,
         formed: 0,
@@ -946,6 +955,9 @@ pub(super) struct Spanning<'a, 's> {
     pub(super) locator: &'a Locator<'a>,
     pub(super) bounds: Size,
     pub(super) laurent: bool,
+    /// Whether the products are reduced modulo a level set's polynomial, so held to the
+    /// space's largest total degree rather than to each bound ([`Spanning::fits`]).
+    pub(super) on_level: bool,
     /// The dimension of the space of integrals.
     pub(super) dimension: usize,
     pub(super) span: &'a mut Stamped<'s>,
@@ -1048,11 +1060,21 @@ impl Spanning<'_, '_> {
         Ok(())
     }
 
+    /// Whether a product of `size` may lie in the space: within each bound (the coordinates'
+    /// degree only unless `laurent`), or, on a level set, within the space's largest total
+    /// degree, since a normal form modulo `P` has at most the total degree of the product it
+    /// reduces (the division's order is graded) but may move it between the momenta, the
+    /// coordinates and the Poisson variables (`x²` replaced through `H = E` by momenta).
     fn fits(&self, size: Size) -> bool {
-        size.momenta <= self.bounds.momenta
-            && (self.laurent || size.coordinates <= self.bounds.coordinates)
-            && size.poisson <= self.bounds.poisson
-            && size.angles_alone <= self.bounds.angles_alone
+        let degrees = match self.on_level {
+            true => size.total_degree() <= self.bounds.total_degree(),
+            false => {
+                size.momenta <= self.bounds.momenta
+                    && (self.laurent || size.coordinates <= self.bounds.coordinates)
+                    && size.poisson <= self.bounds.poisson
+            }
+        };
+        degrees && size.angles_alone <= self.bounds.angles_alone
     }
 }
 

@@ -93,14 +93,14 @@ pub struct NormalFormOutside {
 /// bracket with `H` is a multiple of `P`, and each of them and each product is reduced modulo
 /// `P` before it is compared with the basis (`Γ·(M·γ)` is then `0`, and `K·Γ`, whose monomial
 /// `M1² M3 γ1²` the space leaves out, has its normal form in the space). The products are
-/// those whose factors' degrees fit the space's bounds, as without a level set; one whose
-/// normal form has a monomial outside the space is not counted, and neither is a product past
-/// the bounds whose normal form falls back into the space. With one total degree bounding the
-/// space (a Lie–Poisson system's Poisson degree) and the leading form of `P` (its part of top
-/// degree) irreducible there is none: the degree of a normal form is the least of the
-/// functions it represents, and leading forms multiply without cancelling. A leading form that
-/// factors allows one (`(M1 − γ1)(M1 + γ1) = 0` on `M1² − γ1² = 0`), and so may degrees
-/// bounded apart (momenta and positions, `x²` replaced through `H = E` by momenta).
+/// those whose total degree is at most the space's largest (the division's order is graded,
+/// so a normal form's total degree is at most the product's, but it may move between the
+/// momenta and the positions: `x²` replaced through `H = E` by momenta); one whose normal form
+/// has a monomial outside the space is not counted. A product past that degree falls back into
+/// the space only where the leading form of `P` (its part of top degree) divides the product
+/// of its factors' leading forms, so shares a factor with one of them (`M1 − γ1` on
+/// `M1² − γ1² = 1`): an irreducible one never does, since a normal form's leading form is no
+/// multiple of `P`'s.
 #[derive(Clone, Debug)]
 #[non_exhaustive]
 pub struct NewIntegrals {
