@@ -347,28 +347,49 @@ const LINES_TRIED: usize = 12;
 /// such a line almost everywhere; `false` when none of [`LINES_TRIED`] fixed lines shows it.
 /// Over Q as over C, since `gcd(u, u′)` does not depend on the field.
 fn has_no_repeated_factor(p: &Expr, order: &DivisionOrder) -> bool {
-    let degree = p
-        .terms()
-        .map(|t| {
-            let e = t.exponents();
-            order.variables().iter().map(|v| e[v.index()]).sum::<i64>()
-        })
-        .max()
-        .unwrap_or(0);
+    let degree = degree_in(p, order);
     (0..LINES_TRIED).any(|k| {
-        let k = k as i64;
-        // A point and a direction with small integer coordinates, different for each line.
-        let line: Vec<(i64, i64)> = (0..order.variables().len() as i64)
-            .map(|i| {
-                (
-                    (3 * i + 5 * k + 1) % 7 - 3,
-                    (2 * i * i + 3 * k + i + 1) % 11 + 1,
-                )
-            })
-            .collect();
-        let u = restricted_to_line(p, order, &line);
+        let u = restricted_to_line(p, order, &line(k, order));
         u.len() as i64 - 1 == degree && univariate::gcd_with_derivative_is_constant(&u)
     })
+}
+
+/// The total degree of `p` in the variables of `order`.
+fn degree_in(p: &Expr, order: &DivisionOrder) -> i64 {
+    p.terms()
+        .map(|t| degree_of_exponents(&t.exponents(), order))
+        .max()
+        .unwrap_or(0)
+}
+
+/// The total degree of the monomial `exponents` in the variables of `order`.
+fn degree_of_exponents(exponents: &[i64], order: &DivisionOrder) -> i64 {
+    order.variables().iter().map(|v| exponents[v.index()]).sum()
+}
+
+/// The `k`-th line through phase space that [`has_no_repeated_factor`] and
+/// [`OnLevel::top_shares_no_factor`] try: a point and a direction with small integer
+/// coordinates, one pair for each variable of `order`, different for each line.
+fn line(k: usize, order: &DivisionOrder) -> Vec<(i64, i64)> {
+    let k = k as i64;
+    (0..order.variables().len() as i64)
+        .map(|i| {
+            (
+                (3 * i + 5 * k + 1) % 7 - 3,
+                (2 * i * i + 3 * k + i + 1) % 11 + 1,
+            )
+        })
+        .collect()
+}
+
+/// The part of top degree of `p` in the variables of `order` (its leading form).
+fn top_degree_part(p: &Expr, order: &DivisionOrder) -> Result<Expr, EngineError> {
+    let degree = degree_in(p, order);
+    let top = p
+        .terms()
+        .filter(|t| degree_of_exponents(&t.exponents(), order) == degree)
+        .map(|t| (t.coeff().clone(), t.exponents()));
+    Ok(Expr::from_terms(p.vars(), top)?)
 }
 
 /// `p(a + t b)` as its coefficients in `t`, lowest first, for the point and direction
@@ -445,7 +466,13 @@ mod univariate {
         let derivative: Vec<BigRational> = (1..u.len())
             .map(|i| &u[i] * BigRational::from_integer((i as i64).into()))
             .collect();
-        let (mut a, mut b) = (trimmed(u.to_vec()), trimmed(derivative));
+        gcd_is_constant(u, &derivative)
+    }
+
+    /// Whether `gcd(u, w)` is a nonzero constant (Euclid's algorithm over Q): `u` and `w` have
+    /// no common root.
+    pub(super) fn gcd_is_constant(u: &[BigRational], w: &[BigRational]) -> bool {
+        let (mut a, mut b) = (trimmed(u.to_vec()), trimmed(w.to_vec()));
         while !b.is_empty() {
             let r = remainder(&a, &b);
             (a, b) = (b, r);
@@ -538,6 +565,33 @@ impl OnLevel {
         Ok(p_divide(f, &self.fixed, &self.order)?.remainder)
     }
 
+    /// Whether the part of top degree of `f` (a function at the fixed values) is shown to share
+    /// no factor with that of `P`: on one of the lines `a + t b` tried, where `P`'s top part
+    /// does not vanish at `b`, the restrictions of the two top parts have no common root
+    /// (`gcd` a constant over Q, the same over C). A common factor `F` would not vanish at `b`
+    /// either and would divide both restrictions with degree `deg F ≥ 1`. A product of such
+    /// functions then has a top part that `P`'s does not divide, so its normal form modulo `P`
+    /// keeps its total degree. `false` for a function that is not real or holds a variable
+    /// outside the division's order (an angle).
+    pub(super) fn top_shares_no_factor(&self, f: &Expr) -> Result<bool, EngineError> {
+        let phase = self.order.variables();
+        let vars = f.vars();
+        if !f.is_real() || vars.vars().any(|v| f.contains(v) && !phase.contains(&v)) {
+            return Ok(false);
+        }
+        let (p_top, f_top) = (
+            top_degree_part(&self.fixed, &self.order)?,
+            top_degree_part(f, &self.order)?,
+        );
+        let degree = degree_in(&p_top, &self.order);
+        Ok((0..LINES_TRIED).any(|k| {
+            let line = line(k, &self.order);
+            let u = restricted_to_line(&p_top, &self.order, &line);
+            let w = restricted_to_line(&f_top, &self.order, &line);
+            u.len() as i64 - 1 == degree && univariate::gcd_is_constant(&u, &w)
+        }))
+    }
+
     /// The proof that `flow` lies in `(p)` (`p` is `P` at the fixed values or with its
     /// parameters, as `flow` is): the quotient `Q`, where the remainder is zero and
     /// `flow − p·Q`, recomputed, is zero; `None` where it is not.
@@ -582,6 +636,22 @@ mod tests {
             ])
             .unwrap();
         System::new("GC top", space, e("(M1^2 + M2^2 + 4*M3^2)/2 - c*gamma1")).unwrap()
+    }
+
+    /// A system on the plane's canonical coordinates `x`, `y`, `p_x`, `p_y`, with `parameters`
+    /// and the Hamiltonian `h`.
+    fn on_the_plane(name: &str, h: &str, parameters: &[&str]) -> System {
+        let mut builder = Vars::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .momentum("p_x")
+            .momentum("p_y");
+        for p in parameters {
+            builder = builder.parameter(p);
+        }
+        let vars = builder.build().unwrap();
+        let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")]).unwrap();
+        System::new(name, space, Expr::parse(&vars, h).unwrap()).unwrap()
     }
 
     fn level(system: &System, expr: &str, value: &str) -> LevelSet {
@@ -694,18 +764,9 @@ mod tests {
     /// form modulo `H − E`, each integral proved by its quotient.
     #[test]
     fn integrals_are_found_on_an_energy_level() {
-        let vars = Vars::builder()
-            .coordinate("x")
-            .coordinate("y")
-            .momentum("p_x")
-            .momentum("p_y")
-            .parameter("E")
-            .build()
-            .unwrap();
-        let e = |t: &str| Expr::parse(&vars, t).unwrap();
-        let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")]).unwrap();
         let h = "(p_x^2 + p_y^2)/2 + (x^2 + 4*y^2)/2";
-        let oscillator = System::new("1:2 oscillator", space, e(h)).unwrap();
+        let oscillator = on_the_plane("1:2 oscillator", h, &["E"]);
+        let e = |t: &str| Expr::parse(oscillator.vars(), t).unwrap();
         let energy = level(&oscillator, h, "E");
         let space = SearchSpace::default().momenta_degree(3).positions_degree(3);
         let r = on(&oscillator, space, energy.clone()).unwrap();
@@ -728,7 +789,7 @@ mod tests {
             outside.function,
             outside.normal_form
         );
-        let at_one = [(vars.lookup("E").unwrap(), Rational::one())];
+        let at_one = [(oscillator.vars().lookup("E").unwrap(), Rational::one())];
         let divided = outside
             .function
             .divide_by(
@@ -743,9 +804,11 @@ mod tests {
         let order = LevelSet::order(&oscillator);
         let p = energy.polynomial().unwrap();
         let normal = c.divide_by(&p, &order).unwrap().remainder;
-        let fixed =
-            crate::search::fix_parameters(&normal, &[(vars.lookup("E").unwrap(), Rational::one())])
-                .unwrap();
+        let fixed = crate::search::fix_parameters(
+            &normal,
+            &[(oscillator.vars().lookup("E").unwrap(), Rational::one())],
+        )
+        .unwrap();
         let spans = r
             .basis
             .iter()
@@ -826,18 +889,9 @@ mod tests {
     /// is not.
     #[test]
     fn new_integrals_on_an_energy_level_take_the_known_ones_modulo_it() {
-        let vars = Vars::builder()
-            .coordinate("x")
-            .coordinate("y")
-            .momentum("p_x")
-            .momentum("p_y")
-            .parameter("E")
-            .build()
-            .unwrap();
-        let e = |t: &str| Expr::parse(&vars, t).unwrap();
-        let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")]).unwrap();
         let h = "(p_x^2 + p_y^2)/2 + (x^2 + 4*y^2)/2";
-        let oscillator = System::new("1:2 oscillator", space, e(h)).unwrap();
+        let oscillator = on_the_plane("1:2 oscillator", h, &["E"]);
+        let e = |t: &str| Expr::parse(oscillator.vars(), t).unwrap();
         let mut options =
             SearchOptions::new(SearchSpace::default().momenta_degree(4).positions_degree(4))
                 .on(level(&oscillator, h, "E"))
@@ -857,6 +911,31 @@ mod tests {
             .collect();
         assert_eq!(degrees, [3, 3]);
         assert_eq!(new.generated, 3);
+        // `P`'s leading form, (p_x² + p_y² + x² + 4y²)/2, shares no factor with an integral's.
+        assert!(!new.past_degree_undecided);
+    }
+
+    /// For the free particle on `p_x p_y = 1` the leading form of `P` factors, and `p_x`, `p_y`
+    /// are integrals: `p_x · p_y` falls from degree 2 to the constant 1, so products past the
+    /// space's degree might fall back into it, and the result says so; on the
+    /// Goryachev–Chaplygin top's area level set, whose leading form `M·γ` shares no factor
+    /// with `H`'s, `Γ`'s or `K`'s, it does not.
+    #[test]
+    fn a_level_set_whose_leading_form_shares_a_factor_is_said_undecided() {
+        let free = on_the_plane("free particle", "(p_x^2 + p_y^2)/2", &[]);
+        let options =
+            SearchOptions::new(SearchSpace::default().momenta_degree(2).positions_degree(1))
+                .on(level(&free, "p_x*p_y", "1"))
+                .new_only();
+        let r = search(&free, &options).unwrap();
+        assert!(r.new.as_ref().unwrap().past_degree_undecided);
+
+        let top = gc_top();
+        let options = SearchOptions::new(SearchSpace::default().poisson_degree(4))
+            .on(level(&top, "M1*gamma1 + M2*gamma2 + M3*gamma3", "0"))
+            .new_only();
+        let r = search(&top, &options).unwrap();
+        assert!(!r.new.as_ref().unwrap().past_degree_undecided);
     }
 
     /// What the search cannot take on a level set is refused with what is wrong: a level set

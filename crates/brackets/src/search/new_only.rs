@@ -68,7 +68,24 @@ pub(super) fn new_integrals(
         generated: basis.len() - new.len(),
         new,
         products,
+        past_degree_undecided: past_degree_undecided(problem, &complement.gens)?,
     })
+}
+
+/// On a level set, whether a product of `gens` past the space's total degree might have its
+/// normal form in the space: some generator's leading form is not shown to share no factor
+/// with that of `P` ([`OnLevel::top_shares_no_factor`]). Where each shares none, a product's
+/// leading form is no multiple of `P`'s, so its normal form keeps its total degree.
+fn past_degree_undecided(problem: &Problem, gens: &[Generator]) -> Result<bool, EngineError> {
+    let Some(level) = &problem.level else {
+        return Ok(false);
+    };
+    for g in gens {
+        if !level.top_shares_no_factor(&g.expr)? {
+            return Ok(true);
+        }
+    }
+    Ok(false)
 }
 
 /// Whether the space's monomials are related as functions: with denominator atoms or
