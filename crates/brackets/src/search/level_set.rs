@@ -369,16 +369,14 @@ fn degree_of_exponents(exponents: &[i64], order: &DivisionOrder) -> i64 {
 
 /// The `k`-th line through phase space that [`has_no_repeated_factor`] and
 /// [`OnLevel::top_shares_no_factor`] try: a point and a direction with small integer
-/// coordinates, one pair for each variable of `order`, different for each line.
+/// coordinates, one pair for each variable of `order`, different for each line. The
+/// direction's coordinates `(i + 1)(k + 1) mod 13 + 1` differ from variable to variable (for
+/// up to 12 of them, `k` below 12), so that no difference of squares such as `M3² − γ1²`
+/// vanishes along every line.
 fn line(k: usize, order: &DivisionOrder) -> Vec<(i64, i64)> {
     let k = k as i64;
     (0..order.variables().len() as i64)
-        .map(|i| {
-            (
-                (3 * i + 5 * k + 1) % 7 - 3,
-                (2 * i * i + 3 * k + i + 1) % 11 + 1,
-            )
-        })
+        .map(|i| ((3 * i + 5 * k + 1) % 7 - 3, (i + 1) * (k + 1) % 13 + 1))
         .collect()
 }
 
@@ -957,6 +955,18 @@ mod tests {
             &order
         ));
         assert!(has_no_repeated_factor(&p("M1^2 - gamma1^2"), &order));
+        // Differences of squares of the variables whose directions once coincided on every
+        // line (the third and fourth, the second and fifth, the first and sixth).
+        for square_free in [
+            "M3^2 - gamma1^2 - 1",
+            "M2^2 - gamma2^2 - 1",
+            "M1^2 - gamma3^2 - 1",
+        ] {
+            assert!(
+                has_no_repeated_factor(&p(square_free), &order),
+                "{square_free}"
+            );
+        }
         assert!(!has_no_repeated_factor(&p("M1^2*gamma1"), &order));
         assert!(!has_no_repeated_factor(
             &p(&format!("{area}^2*({gamma} - 1)")),
