@@ -99,9 +99,14 @@ pub struct NormalFormOutside {
 /// has a monomial outside the space is not counted. A product past that degree falls back into
 /// the space only where the leading form of `P` (its part of top degree) divides the product
 /// of its factors' leading forms, so shares a factor with one of them (`M1 − γ1` on
-/// `M1² − γ1² = 1`); where each generator's is shown to share none with it, every product that
-/// can reach the space is formed, and otherwise [`NewIntegrals::past_degree_undecided`] says
-/// so.
+/// `M1² − γ1² = 1`); where some generator's is not shown to share none with it,
+/// [`NewIntegrals::past_degree_undecided`] says so. A sum of products past that degree, each
+/// with its normal form outside the space, may still fall back into it where their top-degree
+/// parts add up to a multiple of `P`'s (a polynomial in the generators' leading forms that
+/// `P`'s divides); that is not detected, and each such product counts only by its own normal
+/// form. On the Goryachev–Chaplygin area level set none exists: a polynomial in `H`'s, `Γ`'s
+/// and `K`'s leading forms depends on `γ` only through `|γ|²`, which takes every value ≥ 0 on
+/// `M·γ = 0`, so it vanishes there only where it is zero.
 #[derive(Clone, Debug)]
 #[non_exhaustive]
 pub struct NewIntegrals {
