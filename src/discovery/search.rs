@@ -1311,7 +1311,9 @@ fn new_integrals_text(r: &SearchResult, n: &NewIntegrals) -> String {
     let modulo = match (&r.on, n.past_degree_undecided) {
         (Some(_), false) => {
             ", every known integral and product taken in normal form modulo `P` and \
-                   not counted where that leaves the space"
+             not counted where that leaves the space (products past the space's total degree \
+             are not formed: one alone cannot fall back into it, but a sum of them whose parts \
+             of top degree add up to a multiple of that of `P` is not looked for)"
         }
         (Some(_), true) => {
             ", every known integral and product taken in normal form modulo `P` and \
@@ -1453,7 +1455,7 @@ fn level_set_text(on: &SearchedLevel, fixed: bool) -> String {
          lexicographic order) are left out, {} (each is a combination of lower ones where \
          `P = 0`), and each bracket `{{φ, H}}` is taken modulo `P`. The integrals found are \
          the functions in normal form whose bracket with `H` is a multiple of `P`: they are \
-         conserved on the level set, and none of them vanishes there.",
+         conserved on the level set, and none of them is a multiple of `P`.",
         level_set_shown(on),
         on.polynomial,
         on.leading_monomial,

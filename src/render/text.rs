@@ -404,8 +404,14 @@ fn verdict_line(out: &mut Vec<String>, c: &ClaimResult) {
     }
     if let Some(r) = &c.residual {
         let more = if c.excerpt.is_some() { " + …" } else { "" };
+        // On a level set the residual is lhs − rhs's remainder on division by P: congruent to
+        // it modulo P, not equal.
+        let (relation, modulo) = match c.on_level {
+            Some(_) => ("≡", " (mod P)"),
+            None => ("=", ""),
+        };
         out.extend(wrap_sum(
-            &format!("      residual lhs − rhs = {r}{more}"),
+            &format!("      residual lhs − rhs {relation} {r}{more}{modulo}"),
             WRAP,
             "        ",
         ));
@@ -434,17 +440,23 @@ fn claim(out: &mut Vec<String>, c: &ClaimResult) {
     verdict_line(out, c);
     // On a level set: the quotient that proves it, or what the residual is.
     if let Some(l) = &c.on_level {
-        let line = match l.proof(Style::Unicode) {
-            Some((product, q)) => format!("      {} = {product} with Q = {q}", l.difference),
-            None if c.residual.is_some() => format!(
-                "      (lhs − rhs is not a multiple of P = {}: the residual is its remainder \
-                 on division by P)",
-                l.polynomial
-            ),
-            None => String::new(),
-        };
-        if !line.is_empty() {
-            out.extend(wrap_sum(&line, WRAP, "        "));
+        match l.proof(Style::Unicode) {
+            Some((product, q)) => out.extend(wrap_sum(
+                &format!("      {} = {product} with Q = {q}", l.difference),
+                WRAP,
+                "        ",
+            )),
+            // Prose after the polynomial, where a long line breaks.
+            None if c.residual.is_some() => out.extend(wrap(
+                &format!(
+                    "      P = {} does not divide lhs − rhs: the residual is its remainder on \
+                     division by P",
+                    l.polynomial
+                ),
+                WRAP,
+                "        ",
+            )),
+            None => {}
         }
     }
     if let (ClaimKind::Nonvanishing, Some(w)) = (c.kind, &c.witness) {

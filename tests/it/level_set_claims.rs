@@ -243,12 +243,54 @@ expect = "refuted"
     assert_eq!(axis.residual, Some(p("x")));
     for format in [Format::Text, Format::Markdown, Format::Latex] {
         let shown = render(&report, format, &RenderOptions::default());
-        assert!(shown.contains("not a multiple of"), "{shown}");
+        let says = match format {
+            Format::Text => "P = x² + y² − a does not divide lhs − rhs",
+            _ => "not a multiple of",
+        };
+        assert!(shown.contains(says), "{shown}");
         assert!(
             !shown.contains("not zero on the level set") && !shown.contains("not zero there"),
             "{shown}"
         );
     }
+    // The text's residual is the remainder, congruent to lhs − rhs modulo P, not equal to it:
+    // `x² = 1` on the circle has lhs − rhs = x² − 1 and remainder −y² + a − 1.
+    let file = rotation("[[claim]]\nid = \"t\"\nclaim = \"x^2 = 1\"\non = \"x^2 + y^2 = a\"\nexpect = \"refuted\"\n")
+        .expect("loads");
+    let report = check_report([&file]).expect("checked");
+    assert_eq!(
+        claim_of(&report, "t").residual,
+        Some(file.system().parse("-y^2 + a - 1").unwrap())
+    );
+    let text = render(&report, Format::Text, &RenderOptions::default());
+    assert!(
+        text.contains("residual lhs − rhs ≡ −y² + a − 1 (mod P)"),
+        "{text}"
+    );
+    assert!(!text.contains("residual lhs − rhs ="), "{text}");
+}
+
+/// A claim on a level set is decided by dividing polynomials, so a side with a negative power
+/// of a phase variable is refused, not refuted: `(x² + y² − a)/x = 0` on `x² + y² = a` holds
+/// where `x ≠ 0`, and its Laurent remainder `x + y²/x − a/x` was printed as a refutation.
+/// Multiplied by `x`, the claim is proved.
+#[test]
+fn a_claim_on_a_level_set_with_a_negative_power_is_refused_not_refuted() {
+    let file = rotation(
+        "[[claim]]\nid = \"t\"\nclaim = \"(x^2 + y^2 - a)/x = 0\"\non = \"x^2 + y^2 = a\"\n",
+    )
+    .expect("loads");
+    let err = check_report([&file]).unwrap_err();
+    assert!(
+        err.to_string()
+            .contains("has a negative power of x: a claim on a level set is decided by dividing"),
+        "{err}"
+    );
+    assert_eq!(err.line_col().map(|(line, _)| line), Some(10), "{err}");
+    let file =
+        rotation("[[claim]]\nid = \"t\"\nclaim = \"x^2 + y^2 - a = 0\"\non = \"x^2 + y^2 = a\"\n")
+            .expect("loads");
+    assert!(check_report([&file]).expect("checked").all_proved());
 }
 
 /// A program states a claim on a level set as a file does ([`LoadedSystem::add_claim_on`]):
@@ -311,10 +353,37 @@ fn a_claims_level_set_is_square_free_for_all_but_special_values_of_its_parameter
     assert_eq!(err.line_col(), Some((10, 7)), "{err}");
     assert!(
         err.message
-            .contains("P = x⁴ + 2x²y² − 2ax² + y⁴ − 2ay² + a²")
+            .contains("P = x⁴ + 2x²y² − 2ax² + y⁴ − 2ay² + a² is not shown square-free")
             && err
                 .message
-                .contains("at each of 4 values of its parameters"),
+                .contains("lines tried through phase space and its parameters"),
         "{err}"
     );
+    // Square-free though P is a square where b = a², a curve through every point (1, 1),
+    // (k, k²) of parameter values: the lines run through the parameters too.
+    let file = load_system_text(
+        "circle.toml",
+        "name = \"rotation\"\nhamiltonian = \"x*p_y - y*p_x\"\n\n[phase_space]\n\
+         coordinates = [\"x\", \"y\"]\nparameters = [\"a\", \"b\"]\n\n[[claim]]\n\
+         claim = \"x^2 + y^2 = b - a^2\"\non = \"x^2 + y^2 + a^2 = b\"\n",
+        &LimitsOverride::default(),
+    )
+    .expect("square-free but where b = a²");
+    assert!(check_report([&file]).expect("checked").all_proved());
+}
+
+/// The lines of the square-free test have directions that differ for any number of
+/// variables: with 14 phase variables the 14th took the first's direction on every line, so
+/// `q1² − p_q7² = 1`, square-free, was refused as a square.
+#[test]
+fn a_level_set_in_many_variables_is_shown_square_free() {
+    let file = load_system_text(
+        "seven.toml",
+        "name = \"seven free\"\nhamiltonian = \"(p_q2^2 + p_q3^2)/2\"\n\n[phase_space]\n\
+         coordinates = [\"q1\", \"q2\", \"q3\", \"q4\", \"q5\", \"q6\", \"q7\"]\n\n[[claim]]\n\
+         claim = \"{q1, H} = 0\"\non = \"q1^2 - p_q7^2 = 1\"\n",
+        &LimitsOverride::default(),
+    )
+    .expect("square-free");
+    assert!(check_report([&file]).expect("checked").all_proved());
 }

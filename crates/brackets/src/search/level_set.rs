@@ -95,17 +95,18 @@ impl LevelSet {
     /// [`LevelSet::check`] for a claim, which holds for every value of the parameters, with no
     /// value fixed: the same refusals, but `P` is shown square-free as a polynomial with its
     /// parameters, so for all of their values but those of a proper algebraic subset (`a = 0`
-    /// of `x² = a`), by a square-free restriction to a line at any one of four values of
-    /// them (all at 1, then the `j`-th at `k^j` for `k = 2, 3, 4`), where a search takes them
-    /// at 1 alone: `(x² + y²)² − (a − 1)(x² + y²)` is square-free, though not at `a = 1`.
+    /// of `x² = a`), by a square-free restriction to a line through phase space and the
+    /// parameters (`with_parameters`), where a search takes them at 1 alone:
+    /// `(x² + y²)² − (a − 1)(x² + y²)` is square-free, though not at `a = 1`, and so is
+    /// `x² + a² − b`, though not where `b = a²`.
     pub fn check_for_every_value(&self, system: &System) -> Result<(), EngineError> {
         self.check_form(system, "`on`")?;
         self.check_square_free_and_kept(system, &[], true)
     }
 
     /// The rest of [`LevelSet::check`], after its form: the leading coefficient, `P` square-free
-    /// (at the searched values of the parameters, or at any of [`PARAMETER_POINTS`] values of
-    /// them `for_every_value`), and the flow of `H` keeping the level set.
+    /// (at the searched values of the parameters, or with them as variables
+    /// `for_every_value`), and the flow of `H` keeping the level set.
     fn check_square_free_and_kept(
         &self,
         system: &System,
@@ -127,22 +128,18 @@ impl LevelSet {
             Err(e) => return Err(refusal(&p, e)),
         };
         let p_searched = fix_parameters(&p, &level_parameter_values(&p, fixed))?;
-        let square_free_elsewhere = || {
-            (2..=PARAMETER_POINTS).any(|k| {
-                fix_parameters(&p, &parameter_point(&p, k))
-                    .is_ok_and(|at| has_no_repeated_factor(&at, &order))
-            })
-        };
+        // With its parameters as variables of the lines too: square-free as a polynomial in
+        // them and the phase variables, so over Q(parameters) (Gauss's lemma, the leading
+        // coefficient a number), and for all their values but a proper algebraic subset.
         let square_free = has_no_repeated_factor(&p_searched, &order)
-            || (for_every_value && square_free_elsewhere());
+            || (for_every_value && has_no_repeated_factor(&p, &with_parameters(&p, &order)));
         if !square_free && for_every_value && p_searched != p {
             return invalid(format!(
-                "the level set's polynomial P = {p} has a repeated root on every one of the \
-                 {LINES_TRIED} lines through phase space tried, at each of {PARAMETER_POINTS} \
-                 values of its parameters (all at 1, then the j-th at k^j for k up to \
-                 {PARAMETER_POINTS}), as a polynomial with a repeated factor has: the functions \
-                 on its level set are then not the normal forms modulo P; write each factor of P \
-                 once (A = 0 for A^2 = 0)"
+                "the level set's polynomial P = {p} is not shown square-free: it has a repeated \
+                 root on every one of the {LINES_TRIED} lines tried through phase space and its \
+                 parameters, as a polynomial with a repeated factor has; the functions on its \
+                 level set are then not the normal forms modulo P; write each factor of P once \
+                 (A = 0 for A^2 = 0)"
             ));
         }
         if !square_free {
@@ -158,6 +155,15 @@ impl LevelSet {
             if at.is_empty() { &[] } else { fixed },
         )?;
         let flow = system.bracket(&p, &h)?;
+        if let Some(v) = negative_power(&flow, &order) {
+            return invalid(format!(
+                "{{P, H}} = {} for P = {p}{at} has a negative power of {}: whether the flow of \
+                 H keeps the level set, {{P, H}} a multiple of P, is not decided by dividing \
+                 polynomials",
+                flow.brief_excerpt(),
+                vars_name(&flow, v)
+            ));
+        }
         let division = p_divide(&flow, &p, &order)?;
         if !division.remainder.is_zero() {
             return invalid(format!(
@@ -192,13 +198,11 @@ impl LevelSet {
             ));
         }
         let order = Self::order(system);
-        if let Some(v) = (order.variables().iter())
-            .find(|&&v| self.expr.exponent_range(v).is_some_and(|(lo, _)| lo < 0))
-        {
+        if let Some(v) = negative_power(&self.expr, &order) {
             return invalid(format!(
                 "the level set's expression has a negative power of {}: it must be a \
                  polynomial",
-                vars.variable(*v).unicode()
+                vars.variable(v).unicode()
             ));
         }
         if !order.variables().iter().any(|&v| self.expr.contains(v)) {
@@ -266,6 +270,15 @@ impl LevelSet {
     /// set is decided so.
     pub fn reduce(&self, system: &System, f: &Expr) -> Result<LevelReduction, EngineError> {
         let p = self.polynomial()?;
+        if let Some(v) = negative_power(f, &Self::order(system)) {
+            let v = vars_name(f, v);
+            return Err(EngineError::Invalid(format!(
+                "lhs − rhs = {} has a negative power of {v}: a claim on a level set is decided \
+                 by dividing lhs − rhs by P = {p}, which takes polynomials; multiply both \
+                 sides by a power of {v}",
+                f.brief_excerpt()
+            )));
+        }
         let (proof, remainder) = proof_by_division(f, &p, &Self::order(system))?;
         match proof {
             Some(proof) => Ok(LevelReduction::Vanishes(proof)),
@@ -321,19 +334,17 @@ pub(super) fn level_parameter_values(p: &Expr, given: &[(Var, Rational)]) -> Vec
         .collect()
 }
 
-/// At how many values of its parameters [`LevelSet::check_for_every_value`] tries to show a
-/// level set's polynomial square-free.
-const PARAMETER_POINTS: u32 = 4;
-
-/// The `k`-th value of the parameters that `p` holds at which
-/// [`LevelSet::check_for_every_value`] tries it: the `j`-th of them (from 1, in the order of
-/// their declaration) at `k^j`, so all at 1 for `k = 1`, apart for `k > 1`.
-fn parameter_point(p: &Expr, k: u32) -> Vec<(Var, Rational)> {
-    level_parameter_values(p, &[])
-        .into_iter()
-        .zip(1u32..)
-        .map(|((v, _), j)| (v, Rational::from(i64::from(k).saturating_pow(j))))
-        .collect()
+/// `order`'s variables and then the parameters that `p` holds: the variables of the lines
+/// along which [`LevelSet::check_for_every_value`] shows `p` square-free with its parameters.
+fn with_parameters(p: &Expr, order: &DivisionOrder) -> DivisionOrder {
+    let parameters = level_parameter_values(p, &[]).into_iter().map(|(v, _)| v);
+    let variables: Vec<Var> = order
+        .variables()
+        .iter()
+        .copied()
+        .chain(parameters)
+        .collect();
+    DivisionOrder::graded_lex(&variables)
 }
 
 /// How many lines through phase space [`has_no_repeated_factor`] tries.
@@ -370,13 +381,13 @@ fn degree_of_exponents(exponents: &[i64], order: &DivisionOrder) -> i64 {
 /// The `k`-th line through phase space that [`has_no_repeated_factor`] and
 /// [`OnLevel::top_shares_no_factor`] try: a point and a direction with small integer
 /// coordinates, one pair for each variable of `order`, different for each line. The
-/// direction's coordinates `(i + 1)(k + 1) mod 13 + 1` differ from variable to variable (for
-/// up to 12 of them, `k` below 12), so that no difference of squares such as `M3² − γ1²`
+/// direction's coordinates `(i + 1)(k + 1) + i²` grow with the variable's place `i`, so that
+/// they differ for any number of variables and no difference of squares such as `M3² − γ1²`
 /// vanishes along every line.
 fn line(k: usize, order: &DivisionOrder) -> Vec<(i64, i64)> {
     let k = k as i64;
     (0..order.variables().len() as i64)
-        .map(|i| ((3 * i + 5 * k + 1) % 7 - 3, (i + 1) * (k + 1) % 13 + 1))
+        .map(|i| ((3 * i + 5 * k + 1) % 7 - 3, (i + 1) * (k + 1) + i * i))
         .collect()
 }
 
@@ -487,13 +498,35 @@ fn is_excluded(kind: VarKind) -> bool {
     )
 }
 
-/// `f` divided by `p` in `order`, a refusal of `p` said in words.
+/// `f` divided by `p` in `order`, a refusal of `p` said in words. A dividend with a negative
+/// power of a phase variable is refused: its remainder would be a Laurent polynomial's, and
+/// a nonzero one would not show that `f` is no multiple of `p` (`x + y²/x − a/x` is
+/// `(x² + y² − a)/x`).
 pub(super) fn p_divide(
     f: &Expr,
     p: &Expr,
     order: &DivisionOrder,
 ) -> Result<Division<trigpoly::GaussianRational>, EngineError> {
+    if let Some(v) = negative_power(f, order) {
+        return Err(EngineError::Invalid(format!(
+            "{} has a negative power of {v}: whether it is a multiple of the level set's \
+             polynomial P = {p} is decided by dividing polynomials; multiply it by a power of \
+             {v}",
+            f.brief_excerpt(),
+            v = vars_name(f, v)
+        )));
+    }
     f.divide_by(p, order).map_err(|e| refusal(p, e))
+}
+
+/// The name of `v`, a variable of `f`, as printed.
+fn vars_name(f: &Expr, v: Var) -> String {
+    f.vars().variable(v).unicode().to_string()
+}
+
+/// The first variable of `order` (a phase variable) that `f` holds to a negative power.
+fn negative_power(f: &Expr, order: &DivisionOrder) -> Option<Var> {
+    (order.variables().iter().copied()).find(|&v| f.exponent_range(v).is_some_and(|(lo, _)| lo < 0))
 }
 
 /// A divisor's refusal as the search says it.
@@ -556,6 +589,12 @@ impl OnLevel {
     /// Whether `LM(P)` divides the monomial `exponents`: a monomial the space leaves out.
     pub(super) fn leaves_out(&self, exponents: &[i64]) -> bool {
         self.order.divides(&self.lead, exponents)
+    }
+
+    /// The first phase variable that `f` holds to a negative power, which division by `P`
+    /// does not take ([`p_divide`] refuses it), with its name.
+    pub(super) fn negative_power(&self, f: &Expr) -> Option<String> {
+        negative_power(f, &self.order).map(|v| vars_name(f, v))
     }
 
     /// The remainder of `f` (at the fixed values) on division by `P`: its normal form.

@@ -550,6 +550,20 @@ pub(super) fn refuse_given_known(
             )));
         }
         let fixed = fix_parameters(f, parameters)?;
+        if let Some(level) = on {
+            let flow = at.flow(system, &fixed)?;
+            if let Some(v) = level
+                .negative_power(&fixed)
+                .or_else(|| level.negative_power(&flow))
+            {
+                return Err(refused(format!(
+                    "is not taken on the level set {}: it or its bracket with H has a negative \
+                     power of {v}, and a known integral there is taken modulo the level set's \
+                     polynomial by dividing polynomials",
+                    options.on.as_ref().map_or("", |l| l.text.as_str())
+                )));
+            }
+        }
         if !at.is_integral(system, &fixed, on)? {
             let flow = at.flow(system, &fixed)?;
             return Err(refused(not_an_integral(name, &flow, options, parameters)));

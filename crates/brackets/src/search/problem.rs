@@ -898,7 +898,8 @@ impl AtValues<'_> {
 
     /// Whether `f`, a function at the fixed values, is an integral: its bracket with `H`
     /// ([`AtValues::flow`]) zero, or, on the level set `on`, a multiple of its polynomial
-    /// (the remainder of its division by it zero; a level set takes no condition).
+    /// (the remainder of its division by it zero; a level set takes no condition; a bracket
+    /// with a negative power of a phase variable is not divided, and the function not taken).
     pub(super) fn is_integral(
         &self,
         system: &System,
@@ -907,6 +908,8 @@ impl AtValues<'_> {
     ) -> Result<bool, EngineError> {
         let flow = self.flow(system, f)?;
         match on {
+            // A bracket with a negative power is not divided: such a function is not taken.
+            Some(level) if level.negative_power(&flow).is_some() => Ok(false),
             Some(level) => Ok(level.remainder(&flow)?.is_zero()),
             None => self.vanishes(system, &flow),
         }
