@@ -387,3 +387,28 @@ fn a_level_set_in_many_variables_is_shown_square_free() {
     .expect("square-free");
     assert!(check_report([&file]).expect("checked").all_proved());
 }
+
+/// A level set of high degree is shown square-free, and one with a repeated factor refused,
+/// at that degree: `A⁴⁰ Γ = 1` on the Goryachev–Chaplygin top (degree 82) holds the Casimirs
+/// `Γ` and `A` as integrals, and `(A¹⁰ Γ − 1)²` is refused, named by its leading terms. Its
+/// restriction to a line is
+/// reduced modulo a prime, where Euclid over Q let the coefficients grow (37 s at degree 82).
+#[test]
+fn a_level_set_of_high_degree_is_shown_square_free_or_not() {
+    let mut gc = load_system_file(
+        "systems/goryachev-chaplygin-top.toml",
+        &LimitsOverride::default(),
+    )
+    .expect("loads");
+    gc.add_claim_on("gamma", "{Gamma, H} = 0", "A^40*Gamma = 1")
+        .expect("square-free");
+    let report = check_report([&gc]).expect("checked");
+    assert!(report.all_as_expected() && claim_of(&report, "gamma").proved);
+    let err = gc
+        .add_claim_on("square", "{Gamma, H} = 0", "(A^10*Gamma - 1)^2 = 0")
+        .unwrap_err();
+    assert!(
+        err.message.contains("is not shown square-free") && err.message.len() < 1000,
+        "{err}"
+    );
+}

@@ -17,7 +17,6 @@
 //! lies in the space are found. Each integral is proved by the quotient `Q` of that
 //! division: `{K, H} − P·Q = 0`, recomputed from the bracket and the product.
 
-use trigpoly::num_rational::BigRational;
 use trigpoly::{
     Division, DivisionOrder, DivisionRefusal, Expr, GaussianRational, Rational, Var, VarKind,
 };
@@ -135,19 +134,21 @@ impl LevelSet {
             || (for_every_value && has_no_repeated_factor(&p, &with_parameters(&p, &order)));
         if !square_free && for_every_value && p_searched != p {
             return invalid(format!(
-                "the level set's polynomial P = {p} is not shown square-free: it has a repeated \
+                "the level set's polynomial P = {} is not shown square-free: it has a repeated \
                  root on every one of the {LINES_TRIED} lines tried through phase space and its \
                  parameters, as a polynomial with a repeated factor has; the functions on its \
                  level set are then not the normal forms modulo P; write each factor of P once \
-                 (A = 0 for A^2 = 0)"
+                 (A = 0 for A^2 = 0)",
+                p.brief_excerpt()
             ));
         }
         if !square_free {
             return invalid(format!(
-                "the level set's polynomial P = {p_searched} has a repeated root on every one of \
-                 the {LINES_TRIED} lines through phase space tried, as a polynomial with a \
-                 repeated factor has: the functions on its level set are then not the normal \
-                 forms modulo P; write each factor of P once (A = 0 for A^2 = 0)"
+                "the level set's polynomial P = {} is not shown square-free: it has a repeated \
+                 root on every one of the {LINES_TRIED} lines through phase space tried, as a \
+                 polynomial with a repeated factor has; the functions on its level set are then \
+                 not the normal forms modulo P; write each factor of P once (A = 0 for A^2 = 0)",
+                p_searched.brief_excerpt()
             ));
         }
         let h = fix_parameters(
@@ -352,16 +353,21 @@ const LINES_TRIED: usize = 12;
 
 /// Whether `p`, a real polynomial in the variables `order` names alone, is shown to have no
 /// repeated factor: its restriction `u(t) = p(a + t b)` to a line has the degree of `p` and no
-/// repeated root (`gcd(u, u′)` a constant, by Euclid's algorithm over Q). That is a proof: a
-/// factor `f²` of `p` would make `f(a + t b)²` a factor of `u`, of degree at least 2 since the
-/// top-degree part of `f` does not vanish at `b` where `p`'s does not. A square-free `p` has
-/// such a line almost everywhere; `false` when none of [`LINES_TRIED`] fixed lines shows it.
-/// Over Q as over C, since `gcd(u, u′)` does not depend on the field.
+/// repeated root, both seen modulo the prime [`univariate::PRIME`]: `u mod p` of `p`'s degree
+/// and `gcd(u, u′)` a constant in `F_p[t]` (Euclid's algorithm). That is a proof: a factor
+/// `f²` of `p` would make `f(a + t b)²` a factor of `u`, of degree at least 2 since the
+/// top-degree part of `f` does not vanish at `b` where `p`'s does not, and modulo the prime
+/// too, where `u`'s leading coefficient, so `f`'s, is not zero (Gauss's lemma). Working
+/// modulo a prime keeps the coefficients one word each, where Euclid over Q made them grow
+/// (a `P` of degree 80 took minutes). A square-free `p` has such a line almost everywhere;
+/// `false` when none of [`LINES_TRIED`] fixed lines shows it. Over Q as over C, since
+/// `gcd(u, u′)` does not depend on the field.
 fn has_no_repeated_factor(p: &Expr, order: &DivisionOrder) -> bool {
     let degree = degree_in(p, order);
     (0..LINES_TRIED).any(|k| {
-        let u = restricted_to_line(p, order, &line(k, order));
-        u.len() as i64 - 1 == degree && univariate::gcd_with_derivative_is_constant(&u)
+        restricted_to_line(p, order, &line(k, order)).is_some_and(|u| {
+            u.len() as i64 - 1 == degree && univariate::gcd_with_derivative_is_constant(&u)
+        })
     })
 }
 
@@ -401,68 +407,131 @@ fn top_degree_part(p: &Expr, order: &DivisionOrder) -> Result<Expr, EngineError>
     Ok(Expr::from_terms(p.vars(), top)?)
 }
 
-/// `p(a + t b)` as its coefficients in `t`, lowest first, for the point and direction
-/// `(a_i, b_i)` of `line` over the variables of `order` (the real parts of `p`'s coefficients:
-/// `p` is real).
-fn restricted_to_line(p: &Expr, order: &DivisionOrder, line: &[(i64, i64)]) -> Vec<BigRational> {
-    let mut sum: Vec<BigRational> = Vec::new();
+/// `p(a + t b)` modulo [`univariate::PRIME`] as its coefficients in `t`, lowest first, for
+/// the point and direction `(a_i, b_i)` of `line` over the variables of `order` (the real
+/// parts of `p`'s coefficients: `p` is real); `None` where a coefficient's denominator is a
+/// multiple of the prime. Each variable's powers of `a + t b` are formed once.
+fn restricted_to_line(p: &Expr, order: &DivisionOrder, line: &[(i64, i64)]) -> Option<Vec<u64>> {
+    let variables = order.variables();
+    let mut powers: Vec<Vec<Vec<u64>>> = variables
+        .iter()
+        .zip(line)
+        .map(|(_, &(a, b))| {
+            vec![
+                vec![1],
+                vec![univariate::from_i64(a), univariate::from_i64(b)],
+            ]
+        })
+        .collect();
+    let mut sum: Vec<u64> = Vec::new();
     for t in p.terms() {
         let e = t.exponents();
-        let mut product = vec![t.coeff().re.to_big_rational()];
-        for (v, &(a, b)) in order.variables().iter().zip(line) {
-            let factor = [
-                BigRational::from_integer(a.into()),
-                BigRational::from_integer(b.into()),
-            ];
-            for _ in 0..e[v.index()] {
-                product = univariate::mul(&product, &factor);
+        let mut product = vec![univariate::from_rational(&t.coeff().re.to_big_rational())?];
+        for (k, v) in variables.iter().enumerate() {
+            let n = usize::try_from(e[v.index()]).ok()?;
+            while powers[k].len() <= n {
+                let next = univariate::mul(&powers[k][powers[k].len() - 1], &powers[k][1]);
+                powers[k].push(next);
+            }
+            if n > 0 {
+                product = univariate::mul(&product, &powers[k][n]);
             }
         }
         sum = univariate::add(&sum, &product);
     }
-    univariate::trimmed(sum)
+    Some(univariate::trimmed(sum))
 }
 
-/// Polynomials in one variable over Q, as coefficient vectors (lowest first, no trailing
-/// zero), for the square-free test of a level set.
+/// Polynomials in one variable over the field `F_p` of the prime [`PRIME`](univariate::PRIME),
+/// as coefficient vectors (lowest first, no trailing zero), for the square-free test of a
+/// level set.
 mod univariate {
-    use num_traits::Zero;
+    use num_traits::{ToPrimitive, Zero};
+    use trigpoly::num_bigint::BigInt;
     use trigpoly::num_rational::BigRational;
 
+    /// The Mersenne prime `2⁶¹ − 1`, far above any degree a level set has, so that the
+    /// derivative of `tⁿ` is not 0 modulo it.
+    pub(super) const PRIME: u64 = (1 << 61) - 1;
+
+    fn mul_mod(a: u64, b: u64) -> u64 {
+        (u128::from(a) * u128::from(b) % u128::from(PRIME)) as u64
+    }
+
+    fn add_mod(a: u64, b: u64) -> u64 {
+        (a + b) % PRIME
+    }
+
+    fn sub_mod(a: u64, b: u64) -> u64 {
+        (a + PRIME - b) % PRIME
+    }
+
+    /// `a⁻¹` modulo the prime, by Fermat (`a` not zero).
+    fn inverse(a: u64) -> u64 {
+        let (mut base, mut exponent, mut result) = (a, PRIME - 2, 1);
+        while exponent > 0 {
+            if exponent & 1 == 1 {
+                result = mul_mod(result, base);
+            }
+            base = mul_mod(base, base);
+            exponent >>= 1;
+        }
+        result
+    }
+
+    pub(super) fn from_i64(a: i64) -> u64 {
+        a.rem_euclid(PRIME as i64) as u64
+    }
+
+    fn from_integer(n: &BigInt) -> u64 {
+        let p = BigInt::from(PRIME);
+        (((n % &p) + &p) % &p).to_u64().expect("below the prime")
+    }
+
+    /// `q` modulo the prime; `None` where its denominator is a multiple of it.
+    pub(super) fn from_rational(q: &BigRational) -> Option<u64> {
+        let denominator = from_integer(q.denom());
+        (denominator != 0).then(|| mul_mod(from_integer(q.numer()), inverse(denominator)))
+    }
+
     /// `u` without trailing zeros.
-    pub(super) fn trimmed(mut u: Vec<BigRational>) -> Vec<BigRational> {
+    pub(super) fn trimmed(mut u: Vec<u64>) -> Vec<u64> {
         while u.last().is_some_and(Zero::is_zero) {
             u.pop();
         }
         u
     }
 
-    pub(super) fn add(u: &[BigRational], w: &[BigRational]) -> Vec<BigRational> {
-        let zero = BigRational::zero();
+    pub(super) fn add(u: &[u64], w: &[u64]) -> Vec<u64> {
         (0..u.len().max(w.len()))
-            .map(|i| u.get(i).unwrap_or(&zero) + w.get(i).unwrap_or(&zero))
+            .map(|i| {
+                add_mod(
+                    u.get(i).copied().unwrap_or(0),
+                    w.get(i).copied().unwrap_or(0),
+                )
+            })
             .collect()
     }
 
-    pub(super) fn mul(u: &[BigRational], w: &[BigRational]) -> Vec<BigRational> {
-        let mut product = vec![BigRational::zero(); (u.len() + w.len()).saturating_sub(1)];
-        for (i, a) in u.iter().enumerate() {
-            for (j, b) in w.iter().enumerate() {
-                product[i + j] += a * b;
+    pub(super) fn mul(u: &[u64], w: &[u64]) -> Vec<u64> {
+        let mut product = vec![0; (u.len() + w.len()).saturating_sub(1)];
+        for (i, &a) in u.iter().enumerate() {
+            for (j, &b) in w.iter().enumerate() {
+                product[i + j] = add_mod(product[i + j], mul_mod(a, b));
             }
         }
         product
     }
 
     /// The remainder of `u` on division by `w` (`w` nonzero, trimmed).
-    fn remainder(u: &[BigRational], w: &[BigRational]) -> Vec<BigRational> {
+    fn remainder(u: &[u64], w: &[u64]) -> Vec<u64> {
         let mut r = trimmed(u.to_vec());
-        let lead = &w[w.len() - 1];
+        let lead = inverse(w[w.len() - 1]);
         while r.len() >= w.len() {
-            let factor = &r[r.len() - 1] / lead;
+            let factor = mul_mod(r[r.len() - 1], lead);
             let shift = r.len() - w.len();
-            for (i, c) in w.iter().enumerate() {
-                r[shift + i] -= &factor * c;
+            for (i, &c) in w.iter().enumerate() {
+                r[shift + i] = sub_mod(r[shift + i], mul_mod(factor, c));
             }
             r = trimmed(r);
         }
@@ -471,16 +540,16 @@ mod univariate {
 
     /// Whether `gcd(u, u′)` is a nonzero constant: `u` (of degree at least 1) has no repeated
     /// root.
-    pub(super) fn gcd_with_derivative_is_constant(u: &[BigRational]) -> bool {
-        let derivative: Vec<BigRational> = (1..u.len())
-            .map(|i| &u[i] * BigRational::from_integer((i as i64).into()))
+    pub(super) fn gcd_with_derivative_is_constant(u: &[u64]) -> bool {
+        let derivative: Vec<u64> = (1..u.len())
+            .map(|i| mul_mod(u[i], i as u64 % PRIME))
             .collect();
         gcd_is_constant(u, &derivative)
     }
 
-    /// Whether `gcd(u, w)` is a nonzero constant (Euclid's algorithm over Q): `u` and `w` have
-    /// no common root.
-    pub(super) fn gcd_is_constant(u: &[BigRational], w: &[BigRational]) -> bool {
+    /// Whether `gcd(u, w)` is a nonzero constant (Euclid's algorithm): `u` and `w` have no
+    /// common root.
+    pub(super) fn gcd_is_constant(u: &[u64], w: &[u64]) -> bool {
         let (mut a, mut b) = (trimmed(u.to_vec()), trimmed(w.to_vec()));
         while !b.is_empty() {
             let r = remainder(&a, &b);
@@ -605,8 +674,9 @@ impl OnLevel {
     /// Whether the part of top degree of `f` (a function at the fixed values) is shown to share
     /// no factor with that of `P`: on one of the lines `a + t b` tried, where `P`'s top part
     /// does not vanish at `b`, the restrictions of the two top parts have no common root
-    /// (`gcd` a constant over Q, the same over C). A common factor `F` would not vanish at `b`
-    /// either and would divide both restrictions with degree `deg F ≥ 1`. A product of such
+    /// (`gcd` a constant modulo [`univariate::PRIME`], `P`'s keeping its degree there, so over
+    /// Q and over C). A common factor `F` would not vanish at `b` either and would divide both
+    /// restrictions with degree `deg F ≥ 1`, modulo the prime too. A product of such
     /// functions then has a top part that `P`'s does not divide, so its normal form modulo `P`
     /// keeps its total degree. `false` for a function that is not real or holds a variable
     /// outside the division's order (an angle).
@@ -625,7 +695,9 @@ impl OnLevel {
             let line = line(k, &self.order);
             let u = restricted_to_line(&p_top, &self.order, &line);
             let w = restricted_to_line(&f_top, &self.order, &line);
-            u.len() as i64 - 1 == degree && univariate::gcd_is_constant(&u, &w)
+            u.zip(w).is_some_and(|(u, w)| {
+                u.len() as i64 - 1 == degree && univariate::gcd_is_constant(&u, &w)
+            })
         }))
     }
 
