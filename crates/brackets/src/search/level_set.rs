@@ -22,6 +22,7 @@ use trigpoly::{
 };
 
 use crate::error::EngineError;
+use crate::modular::{Field, Fp};
 use crate::system::System;
 
 use super::parameters::fix_parameters;
@@ -132,23 +133,18 @@ impl LevelSet {
         // coefficient a number), and for all their values but a proper algebraic subset.
         let square_free = has_no_repeated_factor(&p_searched, &order)
             || (for_every_value && has_no_repeated_factor(&p, &with_parameters(&p, &order)));
-        if !square_free && for_every_value && p_searched != p {
-            return invalid(format!(
-                "the level set's polynomial P = {} is not shown square-free: it has a repeated \
-                 root on every one of the {LINES_TRIED} lines tried through phase space and its \
-                 parameters, as a polynomial with a repeated factor has; the functions on its \
-                 level set are then not the normal forms modulo P; write each factor of P once \
-                 (A = 0 for A^2 = 0)",
-                p.brief_excerpt()
-            ));
-        }
         if !square_free {
+            // With its parameters as written where the lines ran through them too.
+            let (shown, through) = match for_every_value && p_searched != p {
+                true => (&p, "tried through phase space and its parameters"),
+                false => (&p_searched, "through phase space tried"),
+            };
             return invalid(format!(
                 "the level set's polynomial P = {} is not shown square-free: it has a repeated \
-                 root on every one of the {LINES_TRIED} lines through phase space tried, as a \
-                 polynomial with a repeated factor has; the functions on its level set are then \
-                 not the normal forms modulo P; write each factor of P once (A = 0 for A^2 = 0)",
-                p_searched.brief_excerpt()
+                 root on every one of the {LINES_TRIED} lines {through}, as a polynomial with a \
+                 repeated factor has; the functions on its level set are then not the normal \
+                 forms modulo P; write each factor of P once (A = 0 for A^2 = 0)",
+                shown.brief_excerpt()
             ));
         }
         let h = fix_parameters(
@@ -353,7 +349,7 @@ const LINES_TRIED: usize = 12;
 
 /// Whether `p`, a real polynomial in the variables `order` names alone, is shown to have no
 /// repeated factor: its restriction `u(t) = p(a + t b)` to a line has the degree of `p` and no
-/// repeated root, both seen modulo the prime [`univariate::PRIME`]: `u mod p` of `p`'s degree
+/// repeated root, both seen modulo the prime [`PRIME`](crate::modular::PRIME): `u mod p` of `p`'s degree
 /// and `gcd(u, u′)` a constant in `F_p[t]` (Euclid's algorithm). That is a proof: a factor
 /// `f²` of `p` would make `f(a + t b)²` a factor of `u`, of degree at least 2 since the
 /// top-degree part of `f` does not vanish at `b` where `p`'s does not, and modulo the prime
@@ -407,26 +403,20 @@ fn top_degree_part(p: &Expr, order: &DivisionOrder) -> Result<Expr, EngineError>
     Ok(Expr::from_terms(p.vars(), top)?)
 }
 
-/// `p(a + t b)` modulo [`univariate::PRIME`] as its coefficients in `t`, lowest first, for
-/// the point and direction `(a_i, b_i)` of `line` over the variables of `order` (the real
-/// parts of `p`'s coefficients: `p` is real); `None` where a coefficient's denominator is a
-/// multiple of the prime. Each variable's powers of `a + t b` are formed once.
-fn restricted_to_line(p: &Expr, order: &DivisionOrder, line: &[(i64, i64)]) -> Option<Vec<u64>> {
+/// `p(a + t b)` modulo the prime [`PRIME`](crate::modular::PRIME) as its coefficients in `t`, lowest first, for the
+/// point and direction `(a_i, b_i)` of `line` over the variables of `order` (the real parts of
+/// `p`'s coefficients: `p` is real); `None` where a coefficient's denominator is a multiple of
+/// the prime. Each variable's powers of `a + t b` are formed once.
+fn restricted_to_line(p: &Expr, order: &DivisionOrder, line: &[(i64, i64)]) -> Option<Vec<Fp>> {
     let variables = order.variables();
-    let mut powers: Vec<Vec<Vec<u64>>> = variables
+    let mut powers: Vec<Vec<Vec<Fp>>> = line
         .iter()
-        .zip(line)
-        .map(|(_, &(a, b))| {
-            vec![
-                vec![1],
-                vec![univariate::from_i64(a), univariate::from_i64(b)],
-            ]
-        })
+        .map(|&(a, b)| vec![vec![Fp::one()], vec![Fp::from_i64(a), Fp::from_i64(b)]])
         .collect();
-    let mut sum: Vec<u64> = Vec::new();
+    let mut sum: Vec<Fp> = Vec::new();
     for t in p.terms() {
         let e = t.exponents();
-        let mut product = vec![univariate::from_rational(&t.coeff().re.to_big_rational())?];
+        let mut product = vec![Fp::from_rational(&t.coeff().re)?];
         for (k, v) in variables.iter().enumerate() {
             let n = usize::try_from(e[v.index()]).ok()?;
             while powers[k].len() <= n {
@@ -442,96 +432,46 @@ fn restricted_to_line(p: &Expr, order: &DivisionOrder, line: &[(i64, i64)]) -> O
     Some(univariate::trimmed(sum))
 }
 
-/// Polynomials in one variable over the field `F_p` of the prime [`PRIME`](univariate::PRIME),
-/// as coefficient vectors (lowest first, no trailing zero), for the square-free test of a
-/// level set.
+/// Polynomials in one variable over `F_p` ([`Fp`], `p =` [`PRIME`](crate::modular::PRIME), far above any degree a
+/// level set has, so that the derivative of `tⁿ` is not 0 modulo it), as coefficient vectors
+/// (lowest first, no trailing zero), for the square-free test of a level set.
 mod univariate {
-    use num_traits::{ToPrimitive, Zero};
-    use trigpoly::num_bigint::BigInt;
-    use trigpoly::num_rational::BigRational;
-
-    /// The Mersenne prime `2⁶¹ − 1`, far above any degree a level set has, so that the
-    /// derivative of `tⁿ` is not 0 modulo it.
-    pub(super) const PRIME: u64 = (1 << 61) - 1;
-
-    fn mul_mod(a: u64, b: u64) -> u64 {
-        (u128::from(a) * u128::from(b) % u128::from(PRIME)) as u64
-    }
-
-    fn add_mod(a: u64, b: u64) -> u64 {
-        (a + b) % PRIME
-    }
-
-    fn sub_mod(a: u64, b: u64) -> u64 {
-        (a + PRIME - b) % PRIME
-    }
-
-    /// `a⁻¹` modulo the prime, by Fermat (`a` not zero).
-    fn inverse(a: u64) -> u64 {
-        let (mut base, mut exponent, mut result) = (a, PRIME - 2, 1);
-        while exponent > 0 {
-            if exponent & 1 == 1 {
-                result = mul_mod(result, base);
-            }
-            base = mul_mod(base, base);
-            exponent >>= 1;
-        }
-        result
-    }
-
-    pub(super) fn from_i64(a: i64) -> u64 {
-        a.rem_euclid(PRIME as i64) as u64
-    }
-
-    fn from_integer(n: &BigInt) -> u64 {
-        let p = BigInt::from(PRIME);
-        (((n % &p) + &p) % &p).to_u64().expect("below the prime")
-    }
-
-    /// `q` modulo the prime; `None` where its denominator is a multiple of it.
-    pub(super) fn from_rational(q: &BigRational) -> Option<u64> {
-        let denominator = from_integer(q.denom());
-        (denominator != 0).then(|| mul_mod(from_integer(q.numer()), inverse(denominator)))
-    }
+    use crate::modular::{Field, Fp};
 
     /// `u` without trailing zeros.
-    pub(super) fn trimmed(mut u: Vec<u64>) -> Vec<u64> {
-        while u.last().is_some_and(Zero::is_zero) {
+    pub(super) fn trimmed(mut u: Vec<Fp>) -> Vec<Fp> {
+        while u.last().is_some_and(Field::is_zero) {
             u.pop();
         }
         u
     }
 
-    pub(super) fn add(u: &[u64], w: &[u64]) -> Vec<u64> {
+    pub(super) fn add(u: &[Fp], w: &[Fp]) -> Vec<Fp> {
+        let zero = Fp::zero();
         (0..u.len().max(w.len()))
-            .map(|i| {
-                add_mod(
-                    u.get(i).copied().unwrap_or(0),
-                    w.get(i).copied().unwrap_or(0),
-                )
-            })
+            .map(|i| u.get(i).unwrap_or(&zero).add(w.get(i).unwrap_or(&zero)))
             .collect()
     }
 
-    pub(super) fn mul(u: &[u64], w: &[u64]) -> Vec<u64> {
-        let mut product = vec![0; (u.len() + w.len()).saturating_sub(1)];
-        for (i, &a) in u.iter().enumerate() {
-            for (j, &b) in w.iter().enumerate() {
-                product[i + j] = add_mod(product[i + j], mul_mod(a, b));
+    pub(super) fn mul(u: &[Fp], w: &[Fp]) -> Vec<Fp> {
+        let mut product = vec![Fp::zero(); (u.len() + w.len()).saturating_sub(1)];
+        for (i, a) in u.iter().enumerate() {
+            for (j, b) in w.iter().enumerate() {
+                product[i + j] = product[i + j].add(&a.mul(b));
             }
         }
         product
     }
 
     /// The remainder of `u` on division by `w` (`w` nonzero, trimmed).
-    fn remainder(u: &[u64], w: &[u64]) -> Vec<u64> {
+    fn remainder(u: &[Fp], w: &[Fp]) -> Vec<Fp> {
         let mut r = trimmed(u.to_vec());
-        let lead = inverse(w[w.len() - 1]);
+        let lead = w[w.len() - 1].inv();
         while r.len() >= w.len() {
-            let factor = mul_mod(r[r.len() - 1], lead);
+            let factor = r[r.len() - 1].mul(&lead);
             let shift = r.len() - w.len();
-            for (i, &c) in w.iter().enumerate() {
-                r[shift + i] = sub_mod(r[shift + i], mul_mod(factor, c));
+            for (i, c) in w.iter().enumerate() {
+                r[shift + i] = r[shift + i].sub(&factor.mul(c));
             }
             r = trimmed(r);
         }
@@ -540,16 +480,14 @@ mod univariate {
 
     /// Whether `gcd(u, u′)` is a nonzero constant: `u` (of degree at least 1) has no repeated
     /// root.
-    pub(super) fn gcd_with_derivative_is_constant(u: &[u64]) -> bool {
-        let derivative: Vec<u64> = (1..u.len())
-            .map(|i| mul_mod(u[i], i as u64 % PRIME))
-            .collect();
+    pub(super) fn gcd_with_derivative_is_constant(u: &[Fp]) -> bool {
+        let derivative: Vec<Fp> = (1..u.len()).map(|i| u[i].mul(&Fp::new(i as u64))).collect();
         gcd_is_constant(u, &derivative)
     }
 
     /// Whether `gcd(u, w)` is a nonzero constant (Euclid's algorithm): `u` and `w` have no
     /// common root.
-    pub(super) fn gcd_is_constant(u: &[u64], w: &[u64]) -> bool {
+    pub(super) fn gcd_is_constant(u: &[Fp], w: &[Fp]) -> bool {
         let (mut a, mut b) = (trimmed(u.to_vec()), trimmed(w.to_vec()));
         while !b.is_empty() {
             let r = remainder(&a, &b);
@@ -674,7 +612,7 @@ impl OnLevel {
     /// Whether the part of top degree of `f` (a function at the fixed values) is shown to share
     /// no factor with that of `P`: on one of the lines `a + t b` tried, where `P`'s top part
     /// does not vanish at `b`, the restrictions of the two top parts have no common root
-    /// (`gcd` a constant modulo [`univariate::PRIME`], `P`'s keeping its degree there, so over
+    /// (`gcd` a constant modulo [`PRIME`](crate::modular::PRIME), `P`'s keeping its degree there, so over
     /// Q and over C). A common factor `F` would not vanish at `b` either and would divide both
     /// restrictions with degree `deg F ≥ 1`, modulo the prime too. A product of such
     /// functions then has a top part that `P`'s does not divide, so its normal form modulo `P`
