@@ -228,6 +228,14 @@ const COMMANDS: &[(&str, &str)] = &[
         "superint search systems/heavy-top.toml --poisson-degree 4 --when 'I3 = 1/3' --new-only",
     ),
     (
+        "neumann",
+        "superint search systems/neumann.toml --poisson-degree 6 --new-only",
+    ),
+    (
+        "neumann-closure",
+        "superint closure systems/neumann.toml F1 F2 F3 H --degree 2 --symbolic a1,a2,a3",
+    ),
+    (
         "calogero-rank",
         "superint rank systems/calogero.toml P H I3 K1 K2",
     ),
@@ -755,6 +763,30 @@ fn euler_top_casimir_and_energy() {
     assert_eq!(
         parse("I1*I3*M2^2 - I2*I3*M2^2 + I1*I2*M3^2 - I2*I3*M3^2"),
         parse("2*I1*I2*I3*H - I2*I3*C")
+    );
+}
+
+/// The Neumann system's Uhlenbeck integrals generate every integral of degree ≤ 6 at fixed
+/// distinct `a_i`, and their weighted sum is `2H` for every `a_i`.
+#[test]
+fn neumann_uhlenbeck_integrals_generate_every_integral_to_degree_6() {
+    expect(
+        "neumann",
+        &[
+            "Parameters fixed for the linear algebra: a1 = 7, a2 = 11/2, a3 = 13/3 (not 1, where \
+             the denominator (a1 − a2) is zero)",
+            "Dimension of the space of integrals: 35. By degree in the Poisson variables: ≤ 0: 1, \
+             ≤ 1: 1, ≤ 2: 5, ≤ 3: 5, ≤ 4: 15, ≤ 5: 15, ≤ 6: 35.",
+            "Known integrals in the space: H, Q, A, F1, F2, F3.",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
+    expect(
+        "neumann-closure",
+        &[
+            "The table closes",
+            "a1 F1 + a2 F2 + a3 F3 = 2 H [R1 proved]",
+        ],
     );
 }
 
