@@ -615,3 +615,41 @@ fn denominators_search_proves_at_the_fixed_value_of_a_parameter_inside_a_denomin
         "{text}"
     );
 }
+
+/// With its parameters kept symbolic, a multiple of an integral by a declared denominator of
+/// parameters alone is a parameter multiple of it: on the Neumann system `1/(a1 − a2)` is a
+/// constant and `Q/(a1 − a2)` a multiple of the Casimir `Q`, so with Uhlenbeck's integrals
+/// known nothing of degree ≤ 2 is new (the constants and multiples were reported new).
+#[test]
+fn a_search_counts_multiples_by_a_denominator_of_parameters_as_generated() {
+    let search = |file: &str| {
+        crate::normalize(&superint_ok(&[
+            "search",
+            file,
+            "--poisson-degree",
+            "2",
+            "--new-only",
+            "--symbolic",
+            "a1,a2,a3",
+            "--parameters-degree",
+            "1",
+        ]))
+    };
+    let out = search("systems/neumann.toml");
+    assert!(
+        out.contains("the generated ones span the whole space (107 dimensions)"),
+        "{out}"
+    );
+    assert!(
+        out.contains("None: the known integrals generate every integral in the space."),
+        "{out}"
+    );
+    // From `H` alone (the file cut before its functions) the Casimirs and Uhlenbeck's
+    // integrals are new, the constants not.
+    let file = std::fs::read_to_string("systems/neumann.toml").expect("the file reads");
+    let bare = &file[..file.find("[[function]]").expect("functions")];
+    let f = scratch_text("denominators-of-parameters", "neumann-bare.toml", bare);
+    let out = search(f.to_str().unwrap());
+    assert!(out.contains("New integrals:"), "{out}");
+    assert!(!out.contains("= 1/("), "{out}");
+}

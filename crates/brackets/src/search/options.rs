@@ -252,8 +252,9 @@ pub struct SearchOptions {
     pub known: Vec<(String, Expr)>,
     /// Also find a complement of what sums of known integrals, constants and products of
     /// integrals of lower grade give (and, with parameters kept symbolic, parameter multiples
-    /// of integrals, and an integral `F` whose multiple `μ·F` by a monomial in the parameters
-    /// lies in the space and is generated): see [`NewIntegrals`](super::NewIntegrals).
+    /// of integrals, and an integral `F` whose multiple `μ·F` by a monomial in the parameters,
+    /// or by a declared denominator of them alone, lies in the space and is generated): see
+    /// [`NewIntegrals`](super::NewIntegrals).
     pub new_only: bool,
     /// Decide that complement by elimination over Q alone. By default it is decided modulo a
     /// 62-bit prime, each dependency found there checked over Q (falling back to Q when one

@@ -231,9 +231,28 @@ pub(super) fn free_parameters(
         .collect()
 }
 
+/// The denominator atoms whose polynomial holds the `symbolic` parameters alone, such as
+/// `a1 − a2`: a polynomial in the parameters, by which a multiple is a parameter multiple too
+/// (`Q/(a1 − a2)` is one of `Q`, and `1/(a1 − a2)` a constant's).
+fn parameter_denominators<'a>(
+    problem: &'a Problem,
+    atoms: &'a [(Var, Expr)],
+    symbolic: &'a [Var],
+) -> impl Iterator<Item = Var> + 'a {
+    atoms
+        .iter()
+        .filter(move |(_, d)| {
+            problem
+                .vars
+                .vars()
+                .all(|v| !d.contains(v) || symbolic.contains(&v))
+        })
+        .map(|(atom, _)| *atom)
+}
+
 /// A parameter multiple `a·X` of an integral `X` of the space that lies in the space.
 pub(super) struct Multiple {
-    /// The parameter `a`.
+    /// The parameter `a`, or a denominator atom of parameters alone (`a1 − a2`).
     pub(super) by: Var,
     /// The coordinates of `X` among the unknowns.
     pub(super) of: SparseVec<Rational>,
@@ -260,7 +279,11 @@ pub(super) fn parameter_multiples(
     let space = system.space();
     let n = basis.len();
     let mut out = Vec::new();
-    for &a in symbolic {
+    for a in symbolic.iter().copied().chain(parameter_denominators(
+        problem,
+        space.denominator_atoms(),
+        symbolic,
+    )) {
         let a_times = Expr::var(&problem.vars, a);
         let mut functions = basis
             .iter()
