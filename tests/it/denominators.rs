@@ -653,3 +653,31 @@ fn a_search_counts_multiples_by_a_denominator_of_parameters_as_generated() {
     assert!(out.contains("New integrals:"), "{out}");
     assert!(!out.contains("= 1/("), "{out}");
 }
+
+/// The rule `--new-only` prints for parameters kept symbolic names the declared denominators
+/// of them alone beside the monomials, since a multiple by one counts as a parameter multiple.
+#[test]
+fn a_search_names_the_denominators_of_parameters_it_divides_by() {
+    let out = crate::normalize(&superint_ok(&[
+        "search",
+        "systems/neumann.toml",
+        "--poisson-degree",
+        "2",
+        "--new-only",
+        "--symbolic",
+        "a1,a2,a3",
+        "--parameters-degree",
+        "1",
+    ]));
+    assert!(
+        out.contains(
+            "an integral whose multiple by a monomial in a1, a2, a3 or by (a1 − a2), (a1 − a3) \
+             or (a2 − a3) lies in the space and is generated"
+        ),
+        "{out}"
+    );
+    assert!(
+        !out.contains("numbers at the parameters' fixed values"),
+        "{out}"
+    );
+}

@@ -134,7 +134,8 @@ use crate::system::System;
 use level_set::OnLevel;
 use new_only::new_integrals;
 use parameters::{
-    fixed_hamiltonian_and_condition, module_generators, parameter_multiples, parameter_values,
+    fixed_hamiltonian_and_condition, module_generators, parameter_denominators,
+    parameter_multiples, parameter_values,
 };
 use problem::{real_rows, AtValues, Components, Problem, RowIndex, IMAGE_BLOCK};
 use proof::{flow_vanishes, lead, primitive_vector};
@@ -242,6 +243,12 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     let module = (!options.symbolic.is_empty()).then(|| ParameterModule {
         parameters: options.symbolic.clone(),
         generators: module_generators(&problem, &kernel, &multiples),
+        denominators: parameter_denominators(
+            &problem,
+            system.space().denominator_atoms(),
+            &options.symbolic,
+        )
+        .collect(),
     });
     timings.total = start.elapsed().as_secs_f64();
     Ok(SearchResult {

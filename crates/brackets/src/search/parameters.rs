@@ -234,7 +234,7 @@ pub(super) fn free_parameters(
 /// The denominator atoms whose polynomial holds the `symbolic` parameters alone, such as
 /// `a1 − a2`: a polynomial in the parameters, by which a multiple is a parameter multiple too
 /// (`Q/(a1 − a2)` is one of `Q`, and `1/(a1 − a2)` a constant's).
-fn parameter_denominators<'a>(
+pub(super) fn parameter_denominators<'a>(
     problem: &'a Problem,
     atoms: &'a [(Var, Expr)],
     symbolic: &'a [Var],

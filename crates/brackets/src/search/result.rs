@@ -141,6 +141,10 @@ pub struct ParameterModule {
     /// earlier generators. Every integral of the space is a combination of them with
     /// polynomial coefficients.
     pub generators: Vec<usize>,
+    /// The denominator atoms of these parameters alone (`a1 − a2`): polynomials in them, by
+    /// which a multiple is a parameter multiple too (`--new-only` counts an integral whose
+    /// multiple by one is generated as generated).
+    pub denominators: Vec<Var>,
 }
 
 /// Seconds spent in each stage (reported, never used to decide anything).
