@@ -226,6 +226,34 @@ struct SpaceExponents {
     momenta: String,
     poisson: String,
     denominators: String,
+    /// What the denominators that hold fixed parameters alone are: numbers, which add no
+    /// unknown (`a1 − a2` with `a1 = 7, a2 = 11/2`); empty where there are none.
+    numbers: String,
+}
+
+/// The note that the denominator `atoms` holding fixed parameters alone are numbers in the
+/// linear algebra, so that their powers add no unknown; empty where none does.
+fn numbers_at_fixed_values(r: &SearchResult, atoms: &[Var]) -> String {
+    let fixed = |v: Var| r.parameters.iter().any(|(p, _)| *p == v);
+    let defined = Expr::denominator_atoms(&r.vars).unwrap_or_default();
+    let numbers: Vec<String> = (defined.iter())
+        .filter(|(atom, d)| {
+            atoms.contains(atom) && r.vars.vars().all(|v| !d.contains(v) || fixed(v))
+        })
+        .map(|(atom, _)| format!("`{}`", r.vars.variable(*atom).unicode()))
+        .collect();
+    match numbers.len() {
+        0 => String::new(),
+        n if n == atoms.len() => {
+            " (numbers at the parameters' fixed values below, so they add no unknown)".into()
+        }
+        _ => format!(
+            " ({} {} at the parameters' fixed values below, so {} no unknown)",
+            listed(&numbers),
+            agreeing(numbers.len(), "a number", "numbers"),
+            agreeing(numbers.len(), "it adds", "they add"),
+        ),
+    }
 }
 
 impl SpaceExponents {
@@ -285,6 +313,7 @@ impl SpaceExponents {
             momenta,
             poisson,
             denominators: denominators.join(" + "),
+            numbers: numbers_at_fixed_values(r, &atoms),
         }
     }
 
@@ -334,8 +363,8 @@ impl SpaceExponents {
         }
         if !self.denominators.is_empty() {
             degrees.push(format!(
-                "degree `{} ≤ {}` in the denominators",
-                self.denominators, s.denominators_degree
+                "degree `{} ≤ {}` in the denominators{}",
+                self.denominators, s.denominators_degree, self.numbers
             ));
         }
         degrees

@@ -681,3 +681,32 @@ fn a_search_names_the_denominators_of_parameters_it_divides_by() {
         "{out}"
     );
 }
+
+/// With the parameters of its denominators fixed, a search says that those denominators are
+/// numbers, whose powers add no unknown: as many unknowns as with none of them.
+#[test]
+fn a_search_says_denominators_of_fixed_parameters_are_numbers() {
+    let unknowns = |denominators: &str| {
+        crate::normalize(&superint_ok(&[
+            "search",
+            "systems/neumann.toml",
+            "--poisson-degree",
+            "2",
+            "--denominators-degree",
+            denominators,
+        ]))
+    };
+    let out = unknowns("2");
+    assert!(
+        out.contains(
+            "degree g + h + j ≤ 2 in the denominators (numbers at the parameters' fixed values \
+             below, so they add no unknown): 28 unknowns"
+        ),
+        "{out}"
+    );
+    let none = unknowns("0");
+    assert!(
+        none.contains(" ≤ 2 in the Poisson variables: 28 unknowns"),
+        "{none}"
+    );
+}
