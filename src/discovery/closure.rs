@@ -81,7 +81,11 @@ fn closure_report_in(
         held: HeldAt::new(options.condition.as_ref(), system.vars(), &c.parameters),
         fixed: !c.parameters.is_empty(),
     };
-    let (results, stuck) = unlifted_count(&c, &holding);
+    let Unlifted {
+        results,
+        stuck,
+        stuck_in_table,
+    } = unlifted_count(&c, &holding);
     let gens: Vec<String> = c.display.iter().map(|g| format!("`{g}`")).collect();
     let gens = gens.join(", ");
     let when = c
@@ -99,6 +103,7 @@ fn closure_report_in(
         when: &when,
         results,
         stuck,
+        stuck_in_table,
         caller,
     };
     let names = Names::of_system(system);
@@ -279,10 +284,20 @@ pub fn file_closure_report(
     Ok((report.about_file(&file.source().origin), closure))
 }
 
-/// How many brackets (off the table's diagonal, polynomials in the generators) and relations
-/// the closure found, and how many of them hold at the fixed values only.
-fn unlifted_count(c: &Closure, holding: &Holding) -> (usize, usize) {
-    let results: Vec<bool> = c
+/// How many brackets and relations a closure found, and how many hold at the fixed values only.
+struct Unlifted {
+    /// The brackets (off the table's diagonal, polynomials in the generators) and relations.
+    results: usize,
+    /// Those of them that hold at the fixed values only.
+    stuck: usize,
+    /// The brackets among `stuck`: where there are none, every entry of the table holds for
+    /// every value (a table of zeros does, whatever relation could not be lifted).
+    stuck_in_table: usize,
+}
+
+/// What the closure `c` found, and what of it holds at the fixed values only.
+fn unlifted_count(c: &Closure, holding: &Holding) -> Unlifted {
+    let brackets: Vec<bool> = c
         .brackets
         .iter()
         .enumerate()
@@ -291,10 +306,14 @@ fn unlifted_count(c: &Closure, holding: &Holding) -> (usize, usize) {
             Bracket::Polynomial { symbolic, .. } => Some(*symbolic),
             Bracket::Outside { .. } => None,
         })
-        .chain(c.relations.iter().map(|r| r.symbolic))
         .collect();
-    let stuck = results.iter().filter(|&&s| holding.unlifted(s)).count();
-    (results.len(), stuck)
+    let stuck = |symbolic: &[bool]| symbolic.iter().filter(|&&s| holding.unlifted(s)).count();
+    let relations: Vec<bool> = c.relations.iter().map(|r| r.symbolic).collect();
+    Unlifted {
+        results: brackets.len() + relations.len(),
+        stuck: stuck(&brackets) + stuck(&relations),
+        stuck_in_table: stuck(&brackets),
+    }
 }
 
 /// What section 1 of a closure's report is written from: the closure, the system and options
@@ -313,6 +332,8 @@ struct Structure<'a> {
     results: usize,
     /// How many of them hold at the fixed values only.
     stuck: usize,
+    /// How many of those are brackets of the table.
+    stuck_in_table: usize,
     /// Who the report is for, whose options its advice names.
     caller: Caller,
 }
@@ -372,9 +393,14 @@ impl Structure<'_> {
             (false, k) => format!(
                 " at `{fixed}`{off_one}, the coefficients then lifted back to the parameters by homogeneity \
                  where the weights allow: {k} of the {} brackets and relations could not be \
-                 lifted, and {} at `{fixed}` only (so does the table)",
+                 lifted, and {} at `{fixed}` only ({}; {})",
                 self.results,
-                agreeing(k, "holds", "hold")
+                agreeing(k, "holds", "hold"),
+                match self.stuck_in_table {
+                    0 => "the table holds for every value",
+                    _ => "so does the table",
+                },
+                self.symbolic_advice(),
             ),
         };
         Entry::Text(format!(
@@ -417,11 +443,31 @@ impl Structure<'_> {
         )))
     }
 
+    /// How to find for every value what could not be lifted: keep the fixed parameters
+    /// symbolic (`--symbolic a1,a2,a3`, or `ClosureOptions::symbolic` for a program).
+    fn symbolic_advice(&self) -> String {
+        match self.caller {
+            Caller::CommandLine => {
+                let names: Vec<&str> = (self.c.parameters.iter())
+                    .map(|(v, _)| self.system.vars().variable(*v).name())
+                    .collect();
+                format!(
+                    "`--symbolic {}` keeps the parameters symbolic, for every value",
+                    names.join(",")
+                )
+            }
+            Caller::Program => {
+                "`ClosureOptions::symbolic` keeps the parameters symbolic, for every value"
+                    .to_string()
+            }
+        }
+    }
+
     /// The structure table, titled with where it holds: at the fixed values too when some
     /// result could not be lifted.
     fn table(&self) -> Entry {
         let fixed = self.holding.held.fixed();
-        let table_at = match (self.stuck, &self.c.condition) {
+        let table_at = match (self.stuck_in_table, &self.c.condition) {
             (0, _) => self.when.to_string(),
             (_, Some(c)) => format!(" at `{c}`, `{fixed}`"),
             (_, None) => format!(" at `{fixed}`"),

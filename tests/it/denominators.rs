@@ -710,3 +710,31 @@ fn a_search_says_denominators_of_fixed_parameters_are_numbers() {
         "{none}"
     );
 }
+
+/// A closure whose relation cannot be lifted but whose table can says that the table holds
+/// for every value, and how to find the relation for every value.
+#[test]
+fn a_closure_with_its_table_lifted_says_it_holds_for_every_value() {
+    let out = crate::normalize(&superint_ok(&[
+        "closure",
+        "systems/neumann.toml",
+        "F1",
+        "F2",
+        "F3",
+        "H",
+        "--degree",
+        "2",
+    ]));
+    assert!(
+        out.contains(
+            "1 of the 7 brackets and relations could not be lifted, and holds at a1 = 7, a2 = \
+             11/2, a3 = 13/3 only (the table holds for every value; --symbolic a1,a2,a3 keeps \
+             the parameters symbolic, for every value)"
+        ),
+        "{out}"
+    );
+    assert!(
+        out.contains("{F, G} for the Neumann system (row F, column G)"),
+        "{out}"
+    );
+}
