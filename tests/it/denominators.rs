@@ -616,25 +616,29 @@ fn denominators_search_proves_at_the_fixed_value_of_a_parameter_inside_a_denomin
     );
 }
 
+/// `search --new-only` on the Neumann system's `file` to degree 2, its `a_i` kept symbolic
+/// (of degree ≤ 1), its output normalized.
+fn new_only_with_a_symbolic(file: &str) -> String {
+    crate::normalize(&superint_ok(&[
+        "search",
+        file,
+        "--poisson-degree",
+        "2",
+        "--new-only",
+        "--symbolic",
+        "a1,a2,a3",
+        "--parameters-degree",
+        "1",
+    ]))
+}
+
 /// With its parameters kept symbolic, a multiple of an integral by a declared denominator of
 /// parameters alone is a parameter multiple of it: on the Neumann system `1/(a1 − a2)` is a
 /// constant and `Q/(a1 − a2)` a multiple of the Casimir `Q`, so with Uhlenbeck's integrals
 /// known nothing of degree ≤ 2 is new (the constants and multiples were reported new).
 #[test]
 fn a_search_counts_multiples_by_a_denominator_of_parameters_as_generated() {
-    let search = |file: &str| {
-        crate::normalize(&superint_ok(&[
-            "search",
-            file,
-            "--poisson-degree",
-            "2",
-            "--new-only",
-            "--symbolic",
-            "a1,a2,a3",
-            "--parameters-degree",
-            "1",
-        ]))
-    };
+    let search = new_only_with_a_symbolic;
     let out = search("systems/neumann.toml");
     assert!(
         out.contains("the generated ones span the whole space (107 dimensions)"),
@@ -658,17 +662,7 @@ fn a_search_counts_multiples_by_a_denominator_of_parameters_as_generated() {
 /// of them alone beside the monomials, since a multiple by one counts as a parameter multiple.
 #[test]
 fn a_search_names_the_denominators_of_parameters_it_divides_by() {
-    let out = crate::normalize(&superint_ok(&[
-        "search",
-        "systems/neumann.toml",
-        "--poisson-degree",
-        "2",
-        "--new-only",
-        "--symbolic",
-        "a1,a2,a3",
-        "--parameters-degree",
-        "1",
-    ]));
+    let out = new_only_with_a_symbolic("systems/neumann.toml");
     assert!(
         out.contains(
             "an integral whose multiple by a monomial in a1, a2, a3 or by (a1 − a2), (a1 − a3) \
