@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use super::input::load_system;
 use anyhow::{anyhow, bail, Context};
-use brackets::search::{SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
+use brackets::search::{BesideLevelSet, SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
 use brackets::{EngineError, System};
 use clap::Args;
 use superint::discovery::{
@@ -73,7 +73,8 @@ pub struct SearchArgs {
     /// 'M1*gamma1 + M2*gamma2 + M3*gamma3 = 0' (EXPR a polynomial in the coordinates, momenta
     /// and Poisson variables, VALUE a constant): finds the integrals K, in normal form modulo
     /// P = EXPR − VALUE, with {K, H} = Q·P, each identity checked exactly. Not with --when
-    /// or --symbolic; with --new-only, known integrals and products are taken modulo P.
+    /// (give parameters their values with --fix), --symbolic or --laurent; with --new-only,
+    /// known integrals and products are taken modulo P.
     #[arg(long, value_name = "LEVEL")]
     on: Option<String>,
     /// Total degree in the momenta (an angle's momentum that --when fixes is left out)
@@ -238,28 +239,25 @@ impl SearchArgs {
     }
 }
 
-impl SearchArgs {
-    /// Refuses, with `--on`, what a search on a level set does not take: `--when` (two
-    /// restrictions at once) and `--symbolic`.
-    fn refuse_beside_level_set(&self) -> anyhow::Result<()> {
-        let refused = [
-            (
-                self.when.is_some(),
-                "--when",
-                "search on the level set alone, or under the condition alone",
-            ),
-            (
-                self.symbolic.is_some(),
-                "--symbolic",
-                "the parameters are fixed (1 unless --fix says otherwise) and each integral \
-                 found is lifted back to them where it can be, and proved there",
-            ),
-        ];
-        match refused.iter().find(|(given, _, _)| *given) {
-            Some((_, option, why)) => bail!("--on does not take {option}: {why}"),
-            None => Ok(()),
-        }
-    }
+/// Refuses, with `--on`, what a search on a level set does not take beside it
+/// ([`BesideLevelSet::for_search`], which words it), naming the option that asked for it:
+/// `--when`, `--symbolic`, `--laurent`. A system the level set is not taken on is refused by
+/// the search, as its other refusals are.
+fn refuse_beside_level_set(system: &System, options: &SearchOptions) -> anyhow::Result<()> {
+    let Some(refused) = BesideLevelSet::for_search(system, options) else {
+        return Ok(());
+    };
+    let option = match refused {
+        BesideLevelSet::PhaseCondition { .. } | BesideLevelSet::ParameterCondition => "--when",
+        BesideLevelSet::Symbolic => "--symbolic",
+        BesideLevelSet::Laurent => "--laurent",
+        _ => return Ok(()),
+    };
+    bail!(
+        "--on does not take {option}, {}: {}",
+        refused.what(),
+        refused.why("--fix")
+    )
 }
 
 /// The level set `text` of `--on`, `EXPR = VALUE`, read and checked
@@ -738,13 +736,13 @@ fn search(a: &SearchArgs, subject: &Subject, format: Format) -> anyhow::Result<R
     let mut options = SearchOptions::new(space);
     options.condition = subject.condition(a.when.as_deref())?;
     options.fixed = subject.fixed(a.fix.as_deref())?;
-    if let Some(on) = &a.on {
-        a.refuse_beside_level_set()?;
-        options.on = Some(level_set(subject, on, &options.fixed)?);
-    }
     if let Some(names) = &a.symbolic {
         options.symbolic = subject.symbolic(names)?;
         options.space = options.space.parameters_degree(a.parameters_degree);
+    }
+    if let Some(on) = &a.on {
+        refuse_beside_level_set(subject.system(), &options)?;
+        options.on = Some(level_set(subject, on, &options.fixed)?);
     }
     options.new_only = a.new_only;
     options.exact_complement = a.exact_complement;

@@ -274,7 +274,7 @@ impl ClaimSpec {
             &self.source,
             &on,
             &self.form,
-            self.condition.is_some(),
+            self.condition.as_ref(),
             trees.as_ref().map(|(l, r)| (l, r)),
         )?;
         self.on = Some(level);
@@ -945,9 +945,14 @@ impl LoadedSystem {
                 let l = scope.lower(&spec.source, lhs, &l_tree)?;
                 let r = scope.lower(&spec.source, rhs, &r_tree)?;
                 let (proved, residual, undecided, on_level) = match &spec.on {
-                    // On a level set: `lhs − rhs` divided by its polynomial.
+                    // On a level set: `lhs − rhs` divided by its polynomial, at the values of
+                    // the parameters that the condition fixes, if any.
                     Some(level) => {
-                        let d = l.checked_sub(&r).map_err(|e| at(&e.into()))?;
+                        let mut d = l.checked_sub(&r).map_err(|e| at(&e.into()))?;
+                        if let Some(c) = &spec.condition {
+                            c.defined_on(&[&l, &r], "the claim").map_err(|e| at(&e))?;
+                            d = c.apply(&d).map_err(|e| at(&e))?;
+                        }
                         let reduced = level.level.reduce(&self.system, &d).map_err(|e| at(&e))?;
                         let mut shown = level.shown.clone();
                         let (proved, residual, undecided) = match reduced {

@@ -3,7 +3,8 @@
 //! decided later by dividing its `lhs − rhs` by `P = EXPR − VALUE`
 //! ([`brackets::search::LevelSet::reduce`]), as `search --on` proves its integrals.
 
-use brackets::search::LevelSet;
+use brackets::search::{BesideLevelSet, LevelSet};
+use brackets::Condition;
 use trigpoly::syntax::Expr as Tree;
 use trigpoly::{DivisionRefusal, Span};
 
@@ -27,17 +28,19 @@ const USAGE: &str = "a level set reads `EXPR = VALUE`, such as \"A = 0\" or \
                      \"M1*gamma1 + M2*gamma2 + M3*gamma3 = 0\"";
 
 /// Reads the level set `text` of a claim of the given `form`, whose sides are `sides` (none
-/// for a rank), `has_when` if it has a condition too. Each refusal is placed in `text`: a rank claim
-/// or a condition besides (the whole text), no `=` (the whole text) or a second one (it), an
-/// empty side (the `=`), a value that is no constant (the value), a system with denominators
-/// or radicals (the whole text), and what [`LevelSet::check`] refuses, a parameter in the
-/// leading coefficient among it (the expression).
+/// for a rank), under its `condition` if it has one: a condition that fixes parameters alone
+/// is taken, and the level set is then that at their values ([`LevelSet::at_values`]). Each
+/// refusal is placed in `text`: a rank claim (the whole text), no `=` (the whole text) or a
+/// second one (it), an empty side (the `=`), what [`BesideLevelSet::for_claim`] refuses, a
+/// condition that sets a phase variable or a system with denominators or radicals (the whole
+/// text), a value that is no constant (the value), and what [`LevelSet::check`] refuses, a
+/// parameter in the leading coefficient among it (the expression).
 pub(crate) fn read_level_set(
     file: &LoadedSystem,
     source: &Source,
     text: &Text,
     form: &ClaimForm,
-    has_when: bool,
+    condition: Option<&Condition>,
     sides: Option<(&Tree, &Tree)>,
 ) -> Result<ClaimLevelSet, FileError> {
     let whole = text.trimmed_span();
@@ -52,18 +55,6 @@ pub(crate) fn read_level_set(
                 .into(),
         ));
     };
-    if has_when {
-        return Err(refuse(
-            text,
-            whole,
-            "a claim takes `on` or `when`, not both: a `when` that sets a phase variable \
-             substitutes into lhs − rhs, which the bracket with H does not commute with, so the \
-             level set would be checked on another flow, and one that fixes parameters alone is \
-             not taken either (the level set and its claim are checked for every value of \
-             them); state the claim on the level set alone, or under the condition alone"
-                .into(),
-        ));
-    }
     let parts = split_top_level(&text.value, '=');
     if parts.len() == 1 {
         return Err(refuse(
@@ -99,14 +90,21 @@ pub(crate) fn read_level_set(
     let expr = scope.lower(source, &lhs, &lhs_tree)?;
     let value = scope.lower(source, &rhs, &rhs_tree)?;
     let system = &file.system;
-    if let Some(what) = LevelSet::refused_system(system) {
+    if let Some(refused) = BesideLevelSet::for_claim(system, condition) {
         return Err(refuse(
             text,
             whole,
-            format!("a claim on a level set does not take {what}"),
+            format!("a claim on a level set does not take {refused}"),
         ));
     }
+    // Under a condition that fixes parameters, the level set at their values.
     let level = LevelSet::new(text.value.trim(), expr, value);
+    let level = match condition {
+        Some(c) => level
+            .at_values(c)
+            .map_err(|e| refuse(text, whole, e.to_string()))?,
+        None => level,
+    };
     let at_value = |e: brackets::EngineError| refuse(&rhs, rhs.trimmed_span(), e.to_string());
     level.check_value(system).map_err(at_value)?;
     let at_expr = |why: String| refuse(&lhs, lhs.trimmed_span(), why);
@@ -114,7 +112,8 @@ pub(crate) fn read_level_set(
         .check_form(system, "`on`")
         .map_err(|e| at_expr(e.to_string()))?;
     let p = level.polynomial().map_err(|e| at_expr(e.to_string()))?;
-    // A claim holds for every value of the parameters: none may be fixed to divide by.
+    // A claim holds for every value of the parameters its condition leaves free: none may be
+    // fixed to divide by.
     if let Err(DivisionRefusal::LeadingCoefficient { .. }) =
         p.leading_term(&LevelSet::order(system))
     {
@@ -127,7 +126,7 @@ pub(crate) fn read_level_set(
         )));
     }
     level
-        .check_for_every_value(system)
+        .check_for_every_value(system, condition)
         .map_err(|e| at_expr(e.to_string()))?;
     let (lhs_shown, rhs_shown) = (file.pretty(sides.0), file.pretty(sides.1));
     let difference = match rhs_shown.as_str() {

@@ -177,21 +177,30 @@ fn level_sets_a_claim_cannot_take_are_refused_where_they_are_written() {
         1,
         "`on` takes an identity `lhs = rhs`, not a rank",
     );
+    // A condition that sets a phase variable does not commute with the bracket with H.
     at_with(
         "{K, H} = 0",
-        "when = \"c = 2\"\n",
+        "when = \"M3 = 1\"\n",
         "A = 0",
         1,
-        "a claim takes `on` or `when`, not both",
+        "a claim on a level set does not take a condition that sets a phase variable \
+         (M3, a Poisson variable): its substitution does not commute with the bracket with H",
     );
-    // A condition that fixes a parameter alone commutes with the bracket: the refusal says
-    // why it is refused all the same, not that it does not commute.
+    // Nor one that sets a parameter to a function of phase space.
     at_with(
         "{K, H} = 0",
-        "when = \"c = 2\"\n",
+        "when = \"c = gamma1\"\n",
         "A = 0",
         1,
-        "one that fixes parameters alone is not taken either",
+        "sets the parameter c to a function of phase space (it holds γ1, a Poisson variable)",
+    );
+    // A condition that fixes the parameter to 0 leaves `c A = 0` no level set.
+    at_with(
+        "{K, H} = 0",
+        "when = \"c = 0\"\n",
+        "c*A = 0",
+        1,
+        "no variable of phase space",
     );
     // An angle, on the harmonic rotor.
     let rotor = std::fs::read_to_string("systems/harmonic-rotor.toml").unwrap();
@@ -410,5 +419,119 @@ fn a_level_set_of_high_degree_is_shown_square_free_or_not() {
     assert!(
         err.message.contains("is not shown square-free") && err.message.len() < 1000,
         "{err}"
+    );
+}
+
+/// The heavy top with `H = (M1² + M2²)/2 + M3²/(2 I3) − c γ1` is the Goryachev–Chaplygin top
+/// at `I3 = 1/4` (`I1 = I2 = 4 I3`), whose cubic `K = M3(M1² + M2²) + c M1 γ3` is conserved
+/// on the area integral's level `A = 0` alone: the file's claim, `on` beside a `when` that
+/// fixes `I3`, is proved by its quotient `Q = −c M2`, recomputed at `I3 = 1/4`. The `when`
+/// matters: without it the claim leaves the remainder `c M2 M3 γ3 (4 − 1/I3)`, and at
+/// Kovalevskaya's `I3 = 1/2` it is refuted with `2c M2 M3 γ3`. Text and JSON show both the
+/// condition and the level set.
+#[test]
+fn the_heavy_top_at_i3_one_quarter_has_the_goryachev_chaplygin_integral_on_its_level_set() {
+    let path = "systems/heavy-top.toml";
+    let top = std::fs::read_to_string(path).unwrap();
+    let claim = |id: &str, when: &str| {
+        format!(
+            "\n[[claim]]\nid = \"{id}\"\nclaim = \"{{M3*(M1^2 + M2^2) + c*M1*gamma3, H}} = 0\"\n\
+             {when}on = \"A = 0\"\nexpect = \"refuted\"\n"
+        )
+    };
+    let text = format!(
+        "{top}{}{}",
+        claim("free-moment", ""),
+        claim("kovalevskaya-moment", "when = \"I3 = 1/2\"\n")
+    );
+    let file = load_system_text(path, &text, &LimitsOverride::default()).expect("loads");
+    let report = check_report([&file]).expect("checked");
+    assert!(report.all_as_expected());
+    let p = |s: &str| file.system().parse(s).expect("parses");
+    let gc = claim_of(&report, "goryachev-chaplygin");
+    assert!(gc.proved && gc.residual.is_none(), "{gc:?}");
+    assert_eq!(gc.condition.as_deref(), Some("I3 = 1/4"));
+    let level = level_of(gc);
+    assert_eq!(level.polynomial, p("M1*gamma1 + M2*gamma2 + M3*gamma3"));
+    let q = level.quotient.as_ref().expect("a quotient");
+    assert_eq!(q, &p("-c*M2"));
+    let i3 = file.system().vars().lookup("I3").unwrap();
+    let flow = p("{M3*(M1^2 + M2^2) + c*M1*gamma3, H}")
+        .subst(i3, &p("1/4"))
+        .unwrap();
+    let product = level.polynomial.checked_mul(q).unwrap();
+    assert!(flow.checked_sub(&product).unwrap().is_zero());
+    let free = claim_of(&report, "free-moment");
+    assert_eq!(
+        free.residual,
+        Some(p("4*c*M2*M3*gamma3 - c*M2*M3*gamma3/I3"))
+    );
+    let kovalevskaya = claim_of(&report, "kovalevskaya-moment");
+    assert_eq!(kovalevskaya.residual, Some(p("2*c*M2*M3*gamma3")));
+    let shown = render(&report, Format::Text, &RenderOptions::default());
+    assert!(
+        shown.contains("{M3 (M1² + M2²) + c M1 γ3, H} = 0 at I3 = 1/4 on A = 0"),
+        "{shown}"
+    );
+    let json = render(&report, Format::Json, &RenderOptions::default());
+    let json: serde_json::Value = serde_json::from_str(&json).expect("JSON");
+    let entry = json["claims"]
+        .as_array()
+        .expect("claims")
+        .iter()
+        .find(|c| c["id"] == "goryachev-chaplygin")
+        .expect("the claim");
+    assert_eq!(entry["condition_ascii"], "I3 = 1/4");
+    assert_eq!(entry["level_set"]["text"], "A = 0");
+    assert_eq!(entry["level_set"]["quotient"], "-c*M2");
+}
+
+/// A condition that fixes a parameter sets it in the level set too: `c A = 0` has a parameter
+/// in its leading coefficient, refused for a claim for every `c`, and at `c = 2` it is `2A =
+/// 0`, on which the Goryachev–Chaplygin integral is proved with `Q = −M2`.
+#[test]
+fn a_condition_that_fixes_a_parameter_fixes_it_in_the_level_set() {
+    let gc = std::fs::read_to_string("systems/goryachev-chaplygin-top.toml").unwrap();
+    let with = |when: &str| {
+        let text = format!(
+            "{gc}\n[[claim]]\nid = \"t\"\nclaim = \"{{K, H}} = 0\"\n{when}on = \"c*A = 0\"\n"
+        );
+        load_system_text("gc.toml", &text, &LimitsOverride::default())
+    };
+    let err = with("").expect_err("a parameter in the leading coefficient");
+    assert!(
+        err.message.contains("has a parameter in the coefficient"),
+        "{err}"
+    );
+    let file = with("when = \"c = 2\"\n").expect("loads");
+    let report = check_report([&file]).expect("checked");
+    let t = claim_of(&report, "t");
+    assert!(t.proved, "{t:?}");
+    let p = |s: &str| file.system().parse(s).expect("parses");
+    assert_eq!(
+        level_of(t).polynomial,
+        p("2*M1*gamma1 + 2*M2*gamma2 + 2*M3*gamma3")
+    );
+    assert_eq!(level_of(t).quotient, Some(p("-M2")));
+}
+
+/// Through the binary, a claim on a level set with a condition that sets a phase variable is
+/// refused with exit status 2, placed at its `on` text.
+#[test]
+fn a_claim_on_a_level_set_under_a_phase_condition_is_refused_by_check() {
+    let gc = std::fs::read_to_string("systems/goryachev-chaplygin-top.toml").unwrap();
+    let text =
+        format!("{gc}\n[[claim]]\nclaim = \"{{K, H}} = 0\"\nwhen = \"M3 = 1\"\non = \"A = 0\"\n");
+    let line = text.lines().count();
+    let file = crate::scratch_text("level-set-claims", "phase-when.toml", &text);
+    let out = crate::superint_exits(&["check", file.to_str().unwrap()], 2);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains(&format!("phase-when.toml:{line}:7: a claim on a level set does not take a condition that sets a phase variable (M3, a Poisson variable)")),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains(" | on = \"A = 0\"") && stderr.contains('^'),
+        "{stderr}"
     );
 }

@@ -998,19 +998,39 @@ fn a_level_set_the_search_cannot_take_is_refused_in_place() {
         assert!(stderr.contains(&format!(" 1 | {on}")) && stderr.contains('^'), "{stderr}");
         assert!(!stderr.contains("panicked"), "{stderr}");
     }
-    for (option, extra) in [
-        ("--when", vec!["--when", "c = 2"]),
-        ("--symbolic", vec!["--symbolic", "c"]),
+    // Each in the engine's words, with the option named: a condition that fixes parameters
+    // alone points to --fix, which fixes them for the search and lifts back.
+    for (extra, says) in [
+        (
+            vec!["--when", "c = 2"],
+            "--on does not take --when, a condition that fixes parameters: a search on a level \
+             set fixes its parameters itself: give their values with --fix",
+        ),
+        (
+            vec!["--when", "M3 = 1"],
+            "--on does not take --when, a condition that sets a phase variable (M3, a Poisson \
+             variable): its substitution does not commute with the bracket with H",
+        ),
+        (
+            vec!["--symbolic", "c"],
+            "--on does not take --symbolic, parameters kept symbolic: the parameters are fixed \
+             (1 unless --fix gives other values)",
+        ),
     ] {
         let args = [&["search", top, "--on", "A = 0"][..], &extra[..]].concat();
         let out = superint(&args);
         let stderr = text(&out.stderr);
         assert_eq!(out.status.code(), Some(2), "{stderr}");
-        assert!(
-            stderr.contains(&format!("--on does not take {option}")),
-            "{stderr}"
-        );
+        assert!(stderr.contains(says), "{stderr}");
     }
+    let oscillator = "systems/anisotropic-oscillator-1-2.toml";
+    let out = superint(&["search", oscillator, "--on", "H = 1", "--laurent"]);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out.stderr));
+    let stderr = text(&out.stderr);
+    assert!(
+        stderr.contains("--on does not take --laurent, a Laurent space"),
+        "{stderr}"
+    );
     let out = superint(&["search", top, "--on", "A = 0", "--new-only"]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
 }

@@ -21,6 +21,7 @@ use trigpoly::{
     Division, DivisionOrder, DivisionRefusal, Expr, GaussianRational, Rational, Var, VarKind,
 };
 
+use crate::claim::Condition;
 use crate::error::EngineError;
 use crate::modular::{Field, Fp};
 use crate::system::System;
@@ -89,7 +90,7 @@ impl LevelSet {
     /// parameters where the leading coefficient is a number for them, else at `fixed`.
     pub fn check(&self, system: &System, fixed: &[(Var, Rational)]) -> Result<(), EngineError> {
         self.check_form(system, "--on")?;
-        self.check_square_free_and_kept(system, fixed, false)
+        self.check_square_free_and_kept(system, fixed, None, false)
     }
 
     /// [`LevelSet::check`] for a claim, which holds for every value of the parameters, with no
@@ -99,18 +100,27 @@ impl LevelSet {
     /// parameters (`with_parameters`), where a search takes them at 1 alone:
     /// `(x² + y²)² − (a − 1)(x² + y²)` is square-free, though not at `a = 1`, and so is
     /// `x² + a² − b`, though not where `b = a²`.
-    pub fn check_for_every_value(&self, system: &System) -> Result<(), EngineError> {
+    ///
+    /// Under a `condition` that fixes parameters alone, the level set is one at their values
+    /// ([`LevelSet::at_values`]), and `{P, H}` is taken there too.
+    pub fn check_for_every_value(
+        &self,
+        system: &System,
+        condition: Option<&Condition>,
+    ) -> Result<(), EngineError> {
         self.check_form(system, "`on`")?;
-        self.check_square_free_and_kept(system, &[], true)
+        self.check_square_free_and_kept(system, &[], condition, true)
     }
 
     /// The rest of [`LevelSet::check`], after its form: the leading coefficient, `P` square-free
     /// (at the searched values of the parameters, or with them as variables
-    /// `for_every_value`), and the flow of `H` keeping the level set.
+    /// `for_every_value`), and the flow of `H` keeping the level set, at the values of the
+    /// parameters that `condition` fixes, if any.
     fn check_square_free_and_kept(
         &self,
         system: &System,
         fixed: &[(Var, Rational)],
+        condition: Option<&Condition>,
         for_every_value: bool,
     ) -> Result<(), EngineError> {
         let invalid = |m: String| Err(EngineError::Invalid(m));
@@ -152,6 +162,10 @@ impl LevelSet {
             if at.is_empty() { &[] } else { fixed },
         )?;
         let flow = system.bracket(&p, &h)?;
+        let flow = match condition {
+            Some(c) => c.apply(&flow)?,
+            None => flow,
+        };
         if let Some(v) = negative_power(&flow, &order) {
             return invalid(format!(
                 "{{P, H}} = {} for P = {p}{at} has a negative power of {}: whether the flow of \
@@ -245,14 +259,18 @@ impl LevelSet {
         }
     }
 
-    /// What a system must not have for a level set to be taken on it, said as what is not
-    /// taken (`a system with denominators or radicals`): the normal forms modulo `P` alone are
-    /// not those modulo `P` and the relations of a radical or a denominator. `None` where it
-    /// may.
-    pub fn refused_system(system: &System) -> Option<&'static str> {
-        let space = system.space();
-        (!space.denominator_atoms().is_empty() || !space.radicals().is_empty())
-            .then_some("a system with denominators or radicals")
+    /// The level set at the values of the parameters that `condition` fixes: its expression
+    /// and value with them substituted, so that `P` is the polynomial at those values. A
+    /// condition that sets a phase variable is refused beside a level set
+    /// ([`BesideLevelSet::for_claim`]) before this is called; one that fixes parameters alone
+    /// commutes with every bracket, so that `{P, H}` and a claim's `lhs − rhs` at the values
+    /// are those with the values substituted.
+    pub fn at_values(&self, condition: &Condition) -> Result<LevelSet, EngineError> {
+        Ok(LevelSet {
+            text: self.text.clone(),
+            expr: condition.apply(&self.expr)?,
+            value: condition.apply(&self.value)?,
+        })
     }
 
     /// Divides `f` by `P` with its parameters (its leading coefficient a number, as
@@ -285,6 +303,146 @@ impl LevelSet {
                  is not zero"
             ))),
         }
+    }
+}
+
+/// What a level set is not taken beside, for a claim's `on` and a search's `--on` alike: the
+/// one place these refusals are decided ([`BesideLevelSet::for_claim`],
+/// [`BesideLevelSet::for_search`]) and worded ([`BesideLevelSet::what`],
+/// [`BesideLevelSet::why`]; shown, `what: why`). A caller may name its own options in it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum BesideLevelSet {
+    /// A condition that sets a phase variable, or a parameter to a function of phase space:
+    /// the phase variable as printed, its kind in words (`p_θ`, `a momentum`), and the
+    /// parameter set to a function of it, if that is what the condition does.
+    PhaseCondition {
+        /// The phase variable, as printed.
+        variable: String,
+        /// Its kind in words.
+        kind: &'static str,
+        /// The parameter set to a function of phase space, as printed, if any.
+        parameter: Option<String>,
+    },
+    /// A search's condition that fixes parameters alone: a search fixes its parameters itself.
+    ParameterCondition,
+    /// A search's parameters kept symbolic.
+    Symbolic,
+    /// A system with denominators or radicals.
+    System,
+    /// A search's Laurent space.
+    Laurent,
+}
+
+impl BesideLevelSet {
+    /// What a claim on a level set does not take: a `condition` that sets a phase variable, or
+    /// a system with denominators or radicals. A condition that fixes parameters alone is
+    /// taken: it commutes with every bracket, and the claim is decided at those values
+    /// ([`LevelSet::at_values`]).
+    pub fn for_claim(system: &System, condition: Option<&Condition>) -> Option<Self> {
+        match condition.and_then(Self::of_phase) {
+            Some(refused) => Some(refused),
+            None => Self::of_system(system),
+        }
+    }
+
+    /// What a search on a level set does not take: any condition (one that fixes parameters
+    /// alone is said by [`SearchOptions::fix`](super::SearchOptions::fix), which the search
+    /// lifts back from), parameters kept symbolic, a system with denominators or radicals, a
+    /// Laurent space.
+    pub fn for_search(system: &System, options: &super::SearchOptions) -> Option<Self> {
+        if let Some(c) = &options.condition {
+            return Some(Self::of_phase(c).unwrap_or(BesideLevelSet::ParameterCondition));
+        }
+        if !options.symbolic.is_empty() {
+            Some(BesideLevelSet::Symbolic)
+        } else if let Some(refused) = Self::of_system(system) {
+            Some(refused)
+        } else {
+            options.space.laurent.then_some(BesideLevelSet::Laurent)
+        }
+    }
+
+    /// A condition that sets a phase variable, or a parameter to a function of phase space
+    /// ([`Condition::phase_variable`]).
+    fn of_phase(condition: &Condition) -> Option<Self> {
+        let (set, variable, kind) = condition.phase_variable()?;
+        let vars = condition.subs().first()?.1.vars();
+        let parameter = (vars.variable(set).kind() == VarKind::Parameter)
+            .then(|| vars.variable(set).unicode().to_string());
+        Some(BesideLevelSet::PhaseCondition {
+            variable,
+            kind,
+            parameter,
+        })
+    }
+
+    /// A system with denominators or radicals: the normal forms modulo `P` alone are not those
+    /// modulo `P` and the relations of a radical or a denominator.
+    fn of_system(system: &System) -> Option<Self> {
+        let space = system.space();
+        (!space.denominator_atoms().is_empty() || !space.radicals().is_empty())
+            .then_some(BesideLevelSet::System)
+    }
+
+    /// What is not taken, in words (`a condition that sets p_θ, a momentum`).
+    pub fn what(&self) -> String {
+        match self {
+            BesideLevelSet::PhaseCondition {
+                variable,
+                kind,
+                parameter: None,
+            } => format!("a condition that sets a phase variable ({variable}, {kind})"),
+            BesideLevelSet::PhaseCondition {
+                variable,
+                kind,
+                parameter: Some(parameter),
+            } => format!(
+                "a condition that sets the parameter {parameter} to a function of phase space \
+                 (it holds {variable}, {kind})"
+            ),
+            BesideLevelSet::ParameterCondition => "a condition that fixes parameters".into(),
+            BesideLevelSet::Symbolic => "parameters kept symbolic".into(),
+            BesideLevelSet::System => "a system with denominators or radicals".into(),
+            BesideLevelSet::Laurent => {
+                "a Laurent space (negative powers of the coordinates)".into()
+            }
+        }
+    }
+
+    /// Why it is not taken, and what to do instead, naming the way parameters are given
+    /// values `fix` (`--fix` on the command line).
+    pub fn why(&self, fix: &str) -> String {
+        match self {
+            BesideLevelSet::PhaseCondition { .. } => format!(
+                "its substitution does not commute with the bracket with H, so the level set \
+                 would be taken on another flow; take the level set alone, or the condition \
+                 alone (parameters alone may be fixed beside it: by a claim's condition, or by \
+                 a search's {fix})"
+            ),
+            BesideLevelSet::ParameterCondition => format!(
+                "a search on a level set fixes its parameters itself: give their values with \
+                 {fix}, at which the integrals are found and from which each is lifted back \
+                 to the parameters where it can be"
+            ),
+            BesideLevelSet::Symbolic => format!(
+                "the parameters are fixed (1 unless {fix} gives other values) and each \
+                 integral found is lifted back to them where it can be, and proved there"
+            ),
+            BesideLevelSet::System => "the normal forms modulo P alone are not those modulo P \
+                                       and the relations of a radical or a denominator"
+                .into(),
+            BesideLevelSet::Laurent => "the division by P takes polynomials".into(),
+        }
+    }
+}
+
+/// How a library's caller gives parameters values, as [`BesideLevelSet`]'s message names it.
+const FIX: &str = "`fix` (on the command line, --fix)";
+
+impl std::fmt::Display for BesideLevelSet {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}: {}", self.what(), self.why(FIX))
     }
 }
 
@@ -1075,6 +1233,10 @@ mod tests {
             .on(level(&top, "M1*gamma1 + M2*gamma2 + M3*gamma3", "0"))
             .when(c_is_two);
         let m = search(&top, &both).unwrap_err().to_string();
-        assert!(m.contains("does not take a condition"), "{m}");
+        assert!(
+            m.contains("does not take a condition that fixes parameters")
+                && m.contains("give their values with `fix` (on the command line, --fix)"),
+            "{m}"
+        );
     }
 }

@@ -105,7 +105,7 @@ mod result;
 #[cfg(test)]
 mod tests;
 
-pub use level_set::{LevelProof, LevelReduction, LevelSet};
+pub use level_set::{BesideLevelSet, LevelProof, LevelReduction, LevelSet};
 pub use options::{SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
 pub(crate) use parameters::{check_parameters, off_vanishing_denominators};
 pub use parameters::{fix_parameters, GENERIC_VALUES};
@@ -353,23 +353,11 @@ fn fixed_search_problem(
     })
 }
 
-/// Refuses what a search on a level set does not take: a condition besides, parameters kept
-/// symbolic, a system with denominators or radicals, a Laurent space.
+/// Refuses what a search on a level set does not take ([`BesideLevelSet::for_search`]).
 fn refuse_beside_level_set(system: &System, options: &SearchOptions) -> Result<(), EngineError> {
-    let refused = if options.condition.is_some() {
-        Some("a condition besides (search on the level set alone, or under the condition alone)")
-    } else if !options.symbolic.is_empty() {
-        Some("parameters kept symbolic (fix them, or leave them at 1, and the integrals found are lifted back where they can be)")
-    } else if let Some(what) = LevelSet::refused_system(system) {
-        Some(what)
-    } else if options.space.laurent {
-        Some("a Laurent space (negative powers of the coordinates)")
-    } else {
-        None
-    };
-    match refused {
-        Some(what) => Err(EngineError::Invalid(format!(
-            "a search on a level set does not take {what}"
+    match BesideLevelSet::for_search(system, options) {
+        Some(refused) => Err(EngineError::Invalid(format!(
+            "a search on a level set does not take {refused}"
         ))),
         None => Ok(()),
     }
