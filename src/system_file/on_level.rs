@@ -101,13 +101,20 @@ pub(crate) fn read_level_set(
     let level = LevelSet::new(text.value.trim(), expr, value);
     let level = match condition {
         Some(c) => level
-            .at_values(c)
+            .at_values(system, c)
             .map_err(|e| refuse(text, whole, e.to_string()))?,
         None => level,
     };
     let at_value = |e: brackets::EngineError| refuse(&rhs, rhs.trimmed_span(), e.to_string());
     level.check_value(system).map_err(at_value)?;
-    let at_expr = |why: String| refuse(&lhs, lhs.trimmed_span(), why);
+    // P is then not as written: a refusal of it says at which values it was taken.
+    let at_expr = |why: String| {
+        let why = match condition {
+            Some(c) => format!("{why}; here P is taken at {c}, which the claim's `when` fixes"),
+            None => why,
+        };
+        refuse(&lhs, lhs.trimmed_span(), why)
+    };
     level
         .check_form(system, "`on`")
         .map_err(|e| at_expr(e.to_string()))?;

@@ -535,3 +535,62 @@ fn a_claim_on_a_level_set_under_a_phase_condition_is_refused_by_check() {
         "{stderr}"
     );
 }
+
+/// A claim's level set under a condition that fixes parameters is checked at their values, as
+/// its claim is decided there: on the heavy top, the flow of `H` keeps `M3 = 0` at `c = 0`
+/// alone (`{M3, H} = −c γ2`), and `M3² = c` is square-free but for `c = 0`, where it is
+/// refused and the refusal says at which values `P` was taken. Where the condition sets to
+/// zero a parameter that `H` or the level set divides by, neither has a value and the claim
+/// is refused, placed at its `on`, not proved (`{A, H} = 0` at `I3 = 0`, though `H` divides by
+/// `I3`) nor refused as a bare division by zero.
+#[test]
+fn a_claim_on_a_level_set_is_checked_at_the_values_its_condition_fixes() {
+    let top = std::fs::read_to_string("systems/heavy-top.toml").unwrap();
+    let with = |claim: &str, when: &str, on: &str| {
+        let text =
+            format!("{top}\n[[claim]]\nid = \"t\"\nclaim = \"{claim}\"\n{when}on = \"{on}\"\n");
+        let line = text.lines().count();
+        (
+            line,
+            load_system_text("top.toml", &text, &LimitsOverride::default()),
+        )
+    };
+    let refused = |claim: &str, when: &str, on: &str, says: &[&str]| {
+        let (line, loaded) = with(claim, when, on);
+        let err = loaded.expect_err("refused");
+        assert_eq!(err.line_col(), Some((line, 7)), "{on}: {err}");
+        for s in says {
+            assert!(err.message.contains(s), "{on}: {err}");
+        }
+    };
+    let (_, kept) = with("{M3, H} = 0", "when = \"c = 0\"\n", "M3 = 0");
+    let report = check_report([&kept.expect("loads")]).expect("checked");
+    assert!(claim_of(&report, "t").proved);
+    refused(
+        "{M3, H} = 0",
+        "",
+        "M3 = 0",
+        &["the flow of H leaves the level set"],
+    );
+    refused(
+        "{M3, H} = 0",
+        "when = \"c = 0\"\n",
+        "M3^2 = c",
+        &[
+            "P = M3² is not shown square-free",
+            "here P is taken at c = 0, which the claim's `when` fixes",
+        ],
+    );
+    refused(
+        "{A, H} = 0",
+        "when = \"I3 = 0\"\n",
+        "A = 0",
+        &["the condition sets I3 = 0, but H divides by I3"],
+    );
+    refused(
+        "{Gamma, H} = 0",
+        "when = \"c = 0\"\n",
+        "M1 + gamma1/c = 0",
+        &["the condition sets c = 0, but the level set divides by c"],
+    );
+}

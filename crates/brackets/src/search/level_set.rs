@@ -163,7 +163,7 @@ impl LevelSet {
         )?;
         let flow = system.bracket(&p, &h)?;
         let flow = match condition {
-            Some(c) => c.apply(&flow)?,
+            Some(c) => c.apply_where_defined(&flow, "{P, H}")?,
             None => flow,
         };
         if let Some(v) = negative_power(&flow, &order) {
@@ -264,8 +264,16 @@ impl LevelSet {
     /// condition that sets a phase variable is refused beside a level set
     /// ([`BesideLevelSet::for_claim`]) before this is called; one that fixes parameters alone
     /// commutes with every bracket, so that `{P, H}` and a claim's `lhs − rhs` at the values
-    /// are those with the values substituted.
-    pub fn at_values(&self, condition: &Condition) -> Result<LevelSet, EngineError> {
+    /// are those with the values substituted. Refused where the condition sets to zero a
+    /// parameter that the level set or `system`'s `H` divides by ([`Condition::defined_on`]):
+    /// there the level set, or the flow that must keep it, has no value.
+    pub fn at_values(
+        &self,
+        system: &System,
+        condition: &Condition,
+    ) -> Result<LevelSet, EngineError> {
+        condition.defined_on(&[&self.expr, &self.value], "the level set")?;
+        condition.defined_on(&[system.hamiltonian()], "H")?;
         Ok(LevelSet {
             text: self.text.clone(),
             expr: condition.apply(&self.expr)?,
