@@ -240,9 +240,9 @@ impl SearchArgs {
 }
 
 /// Refuses, with `--on`, what a search on a level set does not take beside it
-/// ([`BesideLevelSet::for_search`], which words it), naming the option that asked for it:
-/// `--when`, `--symbolic`, `--laurent`. A system the level set is not taken on is refused by
-/// the search, as its other refusals are.
+/// ([`BesideLevelSet::for_search`], which words it), before the level set's text is read:
+/// a system the level set is not taken on first, in the engine's words, then the option that
+/// asked for the rest, named: `--when`, `--symbolic`, `--laurent`.
 fn refuse_beside_level_set(system: &System, options: &SearchOptions) -> anyhow::Result<()> {
     let Some(refused) = BesideLevelSet::for_search(system, options) else {
         return Ok(());
@@ -251,7 +251,7 @@ fn refuse_beside_level_set(system: &System, options: &SearchOptions) -> anyhow::
         BesideLevelSet::PhaseCondition { .. } | BesideLevelSet::ParameterCondition => "--when",
         BesideLevelSet::Symbolic => "--symbolic",
         BesideLevelSet::Laurent => "--laurent",
-        _ => return Ok(()),
+        _ => bail!("a search on a level set does not take {refused}"),
     };
     bail!(
         "--on does not take {option}, {}: {}",

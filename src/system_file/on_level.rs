@@ -30,11 +30,13 @@ const USAGE: &str = "a level set reads `EXPR = VALUE`, such as \"A = 0\" or \
 /// Reads the level set `text` of a claim of the given `form`, whose sides are `sides` (none
 /// for a rank), under its `condition` if it has one: a condition that fixes parameters alone
 /// is taken, and the level set is then that at their values ([`LevelSet::at_values`]). Each
-/// refusal is placed in `text`: a rank claim (the whole text), no `=` (the whole text) or a
-/// second one (it), an empty side (the `=`), what [`BesideLevelSet::for_claim`] refuses, a
-/// condition that sets a phase variable or a system with denominators or radicals (the whole
-/// text), a value that is no constant (the value), and what [`LevelSet::check`] refuses, a
-/// parameter in the leading coefficient among it (the expression).
+/// refusal is placed in `text`: a rank claim (the whole text), what
+/// [`BesideLevelSet::for_claim`] refuses, a system with denominators or radicals or a
+/// condition that sets a phase variable (the whole text, before the text is read), no `=`
+/// (the whole text) or a second one (it), an empty side (the `=`), a divisor the condition
+/// sets to 0 (the whole text), a value that is no constant (the value), and what
+/// [`LevelSet::check`] refuses, a parameter in the leading coefficient among it (the
+/// expression).
 pub(crate) fn read_level_set(
     file: &LoadedSystem,
     source: &Source,
@@ -55,6 +57,15 @@ pub(crate) fn read_level_set(
                 .into(),
         ));
     };
+    // What the level set is not taken beside, before its text is read.
+    let system = &file.system;
+    if let Some(refused) = BesideLevelSet::for_claim(system, condition) {
+        return Err(refuse(
+            text,
+            whole,
+            format!("a claim on a level set does not take {refused}"),
+        ));
+    }
     let parts = split_top_level(&text.value, '=');
     if parts.len() == 1 {
         return Err(refuse(
@@ -89,14 +100,6 @@ pub(crate) fn read_level_set(
     let (lhs_tree, rhs_tree) = (scope.tree(source, &lhs)?, scope.tree(source, &rhs)?);
     let expr = scope.lower(source, &lhs, &lhs_tree)?;
     let value = scope.lower(source, &rhs, &rhs_tree)?;
-    let system = &file.system;
-    if let Some(refused) = BesideLevelSet::for_claim(system, condition) {
-        return Err(refuse(
-            text,
-            whole,
-            format!("a claim on a level set does not take {refused}"),
-        ));
-    }
     // Under a condition that fixes parameters, the level set at their values.
     let level = LevelSet::new(text.value.trim(), expr, value);
     let level = match condition {

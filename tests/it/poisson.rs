@@ -1033,6 +1033,26 @@ fn a_level_set_the_search_cannot_take_is_refused_in_place() {
     );
     let out = superint(&["search", top, "--on", "A = 0", "--new-only"]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    // A system with radicals is refused first, before the options beside the level set and
+    // the level set's own refusals (r holds a radical; the flow leaves x = 1).
+    let kepler = "systems/kepler-3d.toml";
+    for extra in [
+        &["--on", "r = 1"][..],
+        &["--on", "x = 1"],
+        &["--on", "x = 1", "--when", "k = 2"],
+    ] {
+        let args = [&["search", kepler, "--momenta-degree", "1"][..], extra].concat();
+        let out = superint(&args);
+        let stderr = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{stderr}");
+        assert!(
+            stderr.contains(
+                "a search on a level set does not take a system with denominators or radicals"
+            ) && !stderr.contains("--on:")
+                && !stderr.contains("--on does not take"),
+            "{stderr}"
+        );
+    }
 }
 
 /// `search --on --new-only` on the Goryachev–Chaplygin top at Poisson degree 6: with the

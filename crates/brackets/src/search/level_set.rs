@@ -343,29 +343,28 @@ pub enum BesideLevelSet {
 }
 
 impl BesideLevelSet {
-    /// What a claim on a level set does not take: a `condition` that sets a phase variable, or
-    /// a system with denominators or radicals. A condition that fixes parameters alone is
-    /// taken: it commutes with every bracket, and the claim is decided at those values
-    /// ([`LevelSet::at_values`]).
+    /// What a claim on a level set does not take: a system with denominators or radicals
+    /// first, whatever the claim (no level set is taken on it), then a `condition` that sets a
+    /// phase variable. A condition that fixes parameters alone is taken: it commutes with
+    /// every bracket, and the claim is decided at those values ([`LevelSet::at_values`]).
     pub fn for_claim(system: &System, condition: Option<&Condition>) -> Option<Self> {
-        match condition.and_then(Self::of_phase) {
-            Some(refused) => Some(refused),
-            None => Self::of_system(system),
-        }
+        Self::of_system(system).or_else(|| condition.and_then(Self::of_phase))
     }
 
-    /// What a search on a level set does not take: any condition (one that fixes parameters
-    /// alone is said by [`SearchOptions::fix`](super::SearchOptions::fix), which the search
-    /// lifts back from), parameters kept symbolic, a system with denominators or radicals, a
-    /// Laurent space.
+    /// What a search on a level set does not take: a system with denominators or radicals
+    /// first, whatever the options (no level set is taken on it), then any condition (one
+    /// that fixes parameters alone is said by
+    /// [`SearchOptions::fix`](super::SearchOptions::fix), which the search lifts back from),
+    /// parameters kept symbolic, a Laurent space.
     pub fn for_search(system: &System, options: &super::SearchOptions) -> Option<Self> {
+        if let Some(refused) = Self::of_system(system) {
+            return Some(refused);
+        }
         if let Some(c) = &options.condition {
             return Some(Self::of_phase(c).unwrap_or(BesideLevelSet::ParameterCondition));
         }
         if !options.symbolic.is_empty() {
             Some(BesideLevelSet::Symbolic)
-        } else if let Some(refused) = Self::of_system(system) {
-            Some(refused)
         } else {
             options.space.laurent.then_some(BesideLevelSet::Laurent)
         }
