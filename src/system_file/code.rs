@@ -165,7 +165,7 @@ impl LoadedSystem {
         if let Some((_, kind, message)) = index_refusal(indices, |idx| self.what_is(idx)) {
             return Err(FileError::new(kind, &origin, message));
         }
-        let (source, value_at, eigenvalue_at) = two_lines(&origin, value, eigenvalue);
+        let (source, value_at, [eigenvalue_at]) = lines(&origin, value, [eigenvalue]);
         self.families.push(Family {
             name: name.to_string(),
             display: display.to_string(),
@@ -219,7 +219,7 @@ impl LoadedSystem {
         when: Option<&str>,
     ) -> Result<&mut ClaimSpec, FileError> {
         let origin = claim_origin(id)?;
-        let (source, claim_at, when_at) = two_lines(&origin, claim, when);
+        let (source, claim_at, [when_at]) = lines(&origin, claim, [when]);
         let text = Text::within(&source, claim_at.clone());
         let when = when_at.map(|at| Text::within(&source, at).split(','));
         let spec = ClaimSpec::read(
@@ -265,16 +265,50 @@ impl LoadedSystem {
         claim: &str,
         on: &str,
     ) -> Result<&mut ClaimSpec, FileError> {
+        self.add_claim_on_when(id, claim, on, None)
+    }
+
+    /// [`LoadedSystem::add_claim_on`] under the condition `when` if given, as a `[[claim]]`
+    /// with both `on` and `when` declares one: a condition that fixes parameters alone
+    /// (`"I3 = 1/4"`, several separated by commas, as [`LoadedSystem::add_claim`] takes them),
+    /// whose values are substituted into `H`, the claim's sides and the level set, which is
+    /// read and checked at them; one that sets a phase variable is refused beside a level
+    /// set. Errors in the claim are at line 1 of `<claim ID>`, in the level set at line 2,
+    /// in the condition at line 3.
+    ///
+    /// ```
+    /// use superint::prelude::*;
+    ///
+    /// let mut top = load_system_file("systems/heavy-top.toml", &LimitsOverride::default())?;
+    /// let cubic = "{M3*(M1^2 + M2^2) + c*M1*gamma3, H} = 0";
+    /// top.add_claim_on_when("gc", cubic, "A = 0", Some("I3 = 1/4"))?;
+    /// top.add_claim_on_when("kovalevskaya", cubic, "A = 0", Some("I3 = 1/2"))?.expect =
+    ///     Expect::Refuted;
+    /// let report = check_report([&top])?;
+    /// assert!(report.all_as_expected());
+    /// let gc = report.claims().into_iter().find(|c| c.id == "gc").unwrap();
+    /// let q = gc.on_level.as_ref().and_then(|l| l.quotient.clone());
+    /// assert_eq!(q, Some(top.system().parse("-c*M2")?));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn add_claim_on_when(
+        &mut self,
+        id: &str,
+        claim: &str,
+        on: &str,
+        when: Option<&str>,
+    ) -> Result<&mut ClaimSpec, FileError> {
         let origin = claim_origin(id)?;
-        let (source, claim_at, on_at) = two_lines(&origin, claim, Some(on));
+        let (source, claim_at, [on_at, when_at]) = lines(&origin, claim, [Some(on), when]);
         let text = Text::within(&source, claim_at.clone());
         let on = on_at.map(|at| Text::within(&source, at));
+        let when = when_at.map(|at| Text::within(&source, at).split(','));
         let spec = ClaimSpec::read(
             self,
             &source,
             id.to_string(),
             text,
-            None,
+            when,
             Expect::Proved,
             claim_at,
         )?
@@ -352,17 +386,21 @@ fn claim_origin(id: &str) -> Result<String, FileError> {
     Ok(format!("<claim {id}>"))
 }
 
-/// One source for a text and an optional second one, on the line after it: the source and
-/// where each text is in it.
-fn two_lines(
+/// One source for a text and the optional ones after it, each given on a line of its own
+/// after those before it: the source and where each text is in it.
+fn lines<const N: usize>(
     origin: &str,
     first: &str,
-    second: Option<&str>,
-) -> (Source, Range<usize>, Option<Range<usize>>) {
-    let text = match second {
-        Some(s) => format!("{first}\n{s}"),
-        None => first.to_string(),
-    };
-    let second_at = second.map(|s| first.len() + 1..first.len() + 1 + s.len());
-    (Source::program(origin, &text), 0..first.len(), second_at)
+    rest: [Option<&str>; N],
+) -> (Source, Range<usize>, [Option<Range<usize>>; N]) {
+    let mut text = first.to_string();
+    let at = rest.map(|line| {
+        line.map(|s| {
+            text.push('\n');
+            let start = text.len();
+            text.push_str(s);
+            start..text.len()
+        })
+    });
+    (Source::program(origin, &text), 0..first.len(), at)
 }

@@ -352,6 +352,47 @@ fn a_program_states_a_claim_on_a_level_set() {
     assert_eq!(err.origin, "<claim>", "{err}");
 }
 
+/// A program states a claim on a level set under a condition as a file does
+/// ([`LoadedSystem::add_claim_on_when`]): the heavy top's cubic on `A = 0` is proved at
+/// `I3 = 1/4` by `Q = −c M2` and refuted at `I3 = 1/2` with the remainder `2c M2 M3 γ3`, as
+/// the file's claims are; a condition that sets a phase variable is refused at the level set
+/// (line 2 of `<claim ID>`), and an error in the condition itself at line 3.
+#[test]
+fn a_program_states_a_claim_on_a_level_set_under_a_condition() {
+    let mut top =
+        load_system_file("systems/heavy-top.toml", &LimitsOverride::default()).expect("loads");
+    let cubic = "{M3*(M1^2 + M2^2) + c*M1*gamma3, H} = 0";
+    top.add_claim_on_when("mine", cubic, "A = 0", Some("I3 = 1/4"))
+        .expect("read");
+    top.add_claim_on_when("kov", cubic, "A = 0", Some("I3 = 1/2"))
+        .expect("read")
+        .expect = Expect::Refuted;
+    let report = check_report([&top]).expect("checked");
+    assert!(report.all_as_expected());
+    let p = |s: &str| top.system().parse(s).expect("parses");
+    let mine = claim_of(&report, "mine");
+    assert!(
+        mine.proved && mine.condition.as_deref() == Some("I3 = 1/4"),
+        "{mine:?}"
+    );
+    assert_eq!(level_of(mine).quotient, Some(p("-c*M2")));
+    let kov = claim_of(&report, "kov");
+    assert_eq!(kov.residual, Some(p("2*c*M2*M3*gamma3")));
+    let err = top
+        .add_claim_on_when("phase", cubic, "A = 0", Some("M3 = 1"))
+        .unwrap_err();
+    assert_eq!(
+        (err.origin.as_str(), err.line_col()),
+        ("<claim phase>", Some((2, 1))),
+        "{err}"
+    );
+    assert!(err.message.contains("sets a phase variable (M3"), "{err}");
+    let err = top
+        .add_claim_on_when("typo", cubic, "A = 0", Some("I3 = 1/4, I4 = 1"))
+        .unwrap_err();
+    assert_eq!(err.line_col(), Some((3, 11)), "{err}");
+}
+
 /// A claim holds for every value of the parameters, so its level set's polynomial need only
 /// be square-free as a polynomial with them: `(x² + y²)² − (a − 1)(x² + y²)` has the repeated
 /// factor `(x² + y²)²` at `a = 1`, where a search would take it, and none at `a = 2`; the
