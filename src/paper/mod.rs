@@ -582,9 +582,7 @@ impl SectionBuilder {
         lhs: &str,
         rhs: &str,
     ) -> Result<(), EngineError> {
-        let (l, r) = (self.parse(lhs)?, self.parse(rhs)?);
-        self.claim(id, statement, l, r, None, ClaimKind::Identity);
-        Ok(())
+        self.identity_under(id, statement, lhs, rhs, None)
     }
 
     /// `lhs = rhs` under a condition, both parsed in the current system.
@@ -596,8 +594,27 @@ impl SectionBuilder {
         rhs: &str,
         condition: Condition,
     ) -> Result<(), EngineError> {
-        let (l, r) = (self.parse(lhs)?, self.parse(rhs)?);
-        self.claim(id, statement, l, r, Some(condition), ClaimKind::Identity);
+        self.identity_under(id, statement, lhs, rhs, Some(condition))
+    }
+
+    /// `lhs = rhs` under a condition if any, read with what the sides are computed from
+    /// ([`Claim::parse`]), so that a condition where one of those has no value is refused.
+    fn identity_under(
+        &mut self,
+        id: &str,
+        statement: &str,
+        lhs: &str,
+        rhs: &str,
+        condition: Option<Condition>,
+    ) -> Result<(), EngineError> {
+        let mut claim = Claim::parse(&self.system, id, statement, lhs, rhs)?;
+        if let Some(c) = condition {
+            claim = claim.when(c);
+        }
+        self.items.push(Item::Claim(Box::new(PaperClaim {
+            claim,
+            kind: ClaimKind::Identity,
+        })));
         Ok(())
     }
 

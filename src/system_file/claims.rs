@@ -6,7 +6,9 @@ use std::ops::Range;
 use std::time::Instant;
 
 use brackets::search::LevelReduction;
-use brackets::{level_set_coordinates, rank, rank_restricted, Claim, Condition, EngineError};
+use brackets::{
+    level_set_coordinates, rank, rank_restricted, Claim, Condition, EngineError, Input, Recording,
+};
 use toml::Spanned;
 use trigpoly::syntax::{Expr as Tree, ExprKind};
 use trigpoly::{AlgebraError, Expr, ParseCause, Span, VarKind};
@@ -433,10 +435,51 @@ fn claim_condition(
     pieces: &[Text],
     form: &ClaimForm,
 ) -> Result<Condition, FileError> {
+    // Where the condition sets a variable to 0, each thing the claim is computed from must
+    // have a value there: `{A, H} = 0` is no claim at `I3 = 0` when `H` divides by `I3`.
+    // A claim whose own values divide by it is refused when checked, at the claim.
+    let inputs_defined = |c: &Condition| {
+        if !c.subs().iter().any(|(_, v)| v.is_zero()) {
+            return Ok(());
+        }
+        let (values, inputs) = claim_inputs(file, source, form);
+        match values
+            .iter()
+            .any(|v| Condition::sets_a_divisor_to_zero(c.subs(), v).is_some())
+        {
+            true => Ok(()),
+            false => c.defined_on_inputs(&inputs),
+        }
+    };
     match form {
-        ClaimForm::Rank { .. } => parse_rank_condition(file, source, pieces),
-        ClaimForm::Identity { .. } => parse_condition(file, source, pieces),
+        ClaimForm::Rank { .. } => parse_condition_with(file, source, pieces, |c| {
+            c.level_set_variables()?;
+            inputs_defined(c)
+        }),
+        ClaimForm::Identity { .. } => parse_condition_with(file, source, pieces, inputs_defined),
     }
+}
+
+/// A claim's sides, or a rank's functions, and what they are computed from
+/// ([`brackets::Recording`]): the functions they name (`H` among them) and the declared
+/// brackets their brackets take. A text whose value cannot be computed (a limit) adds nothing
+/// here; checking the claim says why.
+fn claim_inputs(file: &LoadedSystem, source: &Source, form: &ClaimForm) -> (Vec<Expr>, Vec<Input>) {
+    let scope = file.scope(file.families.len());
+    let recording = Recording::new(&scope, file.system.space());
+    let texts: Vec<&Text> = match form {
+        ClaimForm::Identity { lhs, rhs } => vec![lhs, rhs],
+        ClaimForm::Rank { functions, .. } => functions.iter().map(|(_, t)| t).collect(),
+    };
+    // A failure is the check's to report.
+    let values = texts
+        .into_iter()
+        .filter_map(|text| {
+            let tree = scope.tree(source, text).ok()?;
+            scope.lower_with(source, text, &tree, &recording).ok()
+        })
+        .collect();
+    (values, recording.into_inputs())
 }
 
 /// The pieces of `when`: `var = value` texts separated by commas, or an array of them.
@@ -942,8 +985,10 @@ impl LoadedSystem {
             ClaimForm::Identity { lhs, rhs } => {
                 let l_tree = scope.tree(&spec.source, lhs)?;
                 let r_tree = scope.tree(&spec.source, rhs)?;
-                let l = scope.lower(&spec.source, lhs, &l_tree)?;
-                let r = scope.lower(&spec.source, rhs, &r_tree)?;
+                let recording = Recording::new(&scope, self.system.space());
+                let l = scope.lower_with(&spec.source, lhs, &l_tree, &recording)?;
+                let r = scope.lower_with(&spec.source, rhs, &r_tree, &recording)?;
+                let inputs = recording.into_inputs();
                 let (proved, residual, undecided, on_level) = match &spec.on {
                     // On a level set: `lhs − rhs` divided by its polynomial, at the values of
                     // the parameters that the condition fixes, if any.
@@ -951,6 +996,7 @@ impl LoadedSystem {
                         let mut d = l.checked_sub(&r).map_err(|e| at(&e.into()))?;
                         if let Some(c) = &spec.condition {
                             c.defined_on(&[&l, &r], "the claim").map_err(|e| at(&e))?;
+                            c.defined_on_inputs(&inputs).map_err(|e| at(&e))?;
                             d = c.apply(&d).map_err(|e| at(&e))?;
                         }
                         let reduced = level.level.reduce(&self.system, &d).map_err(|e| at(&e))?;
@@ -967,7 +1013,8 @@ impl LoadedSystem {
                         (proved, residual, undecided, Some(shown))
                     }
                     None => {
-                        let mut claim = Claim::new(&spec.id, &spec.statement, l, r);
+                        let mut claim =
+                            Claim::new(&spec.id, &spec.statement, l, r).computed_from(inputs);
                         if let Some(c) = &spec.condition {
                             claim = claim.when(c.clone());
                         }
@@ -1012,17 +1059,24 @@ impl LoadedSystem {
                 functions,
                 expected,
             } => {
+                let recording = Recording::new(&scope, self.system.space());
                 let mut exprs: Vec<Expr> = functions
                     .iter()
-                    .map(|(_, t)| scope.parse(&spec.source, t))
+                    .map(|(_, t)| {
+                        let tree = scope.tree(&spec.source, t)?;
+                        scope.lower_with(&spec.source, t, &tree, &recording)
+                    })
                     .collect::<Result<_, _>>()?;
                 // The functions restricted to the condition's level set (a condition on
-                // parameters alone sets their values).
+                // parameters alone sets their values), where what they are computed from has
+                // a value.
                 if let Some(c) = &spec.condition {
                     exprs = exprs
                         .iter()
                         .map(|e| c.apply_where_defined(e, "a function"))
                         .collect::<Result<_, _>>()
+                        .map_err(|e| at(&e))?;
+                    c.defined_on_inputs(&recording.into_inputs())
                         .map_err(|e| at(&e))?;
                 }
                 let mut rank = self.rank_result(

@@ -936,8 +936,20 @@ impl<'a> Scope<'a> {
         text: &Text,
         tree: &Tree,
     ) -> Result<Expr, FileError> {
+        self.lower_with(source, text, tree, self)
+    }
+
+    /// [`Scope::lower`], reading names and brackets through `context`: this scope kept by a
+    /// [`brackets::Recording`] of what the value is computed from.
+    pub(crate) fn lower_with(
+        &self,
+        source: &Source,
+        text: &Text,
+        tree: &Tree,
+        context: &impl Context<GaussianRational>,
+    ) -> Result<Expr, FileError> {
         let prepared = self.prepare(source, text, tree)?;
-        let value = Expr::from_expr(self.file.system.vars(), &prepared, self)
+        let value = Expr::from_expr(self.file.system.vars(), &prepared, context)
             .map_err(|e| self.display_error(source, text, &e));
         for noted in self.noted.take() {
             self.file.warn(self.warning(source, text, &noted));

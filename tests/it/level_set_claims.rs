@@ -598,8 +598,9 @@ fn a_claim_on_a_level_set_under_a_phase_condition_is_refused_by_check() {
 /// alone (`{M3, H} = −c γ2`), and `M3² = c` is square-free but for `c = 0`, where it is
 /// refused and the refusal says at which values `P` was taken. Where the condition sets to
 /// zero a parameter that `H` or the level set divides by, neither has a value and the claim
-/// is refused, placed at its `on`, not proved (`{A, H} = 0` at `I3 = 0`, though `H` divides by
-/// `I3`) nor refused as a bare division by zero.
+/// is refused, placed at its `on`, not proved (`A = 0` at `I3 = 0`, though the flow of `H`,
+/// which divides by `I3`, must keep `A = 0`) nor refused as a bare division by zero; a claim
+/// whose sides name `H` (`{A, H} = 0`) is refused at its `when`, as one on no level set is.
 #[test]
 fn a_claim_on_a_level_set_is_checked_at_the_values_its_condition_fixes() {
     let top = std::fs::read_to_string("systems/heavy-top.toml").unwrap();
@@ -639,11 +640,17 @@ fn a_claim_on_a_level_set_is_checked_at_the_values_its_condition_fixes() {
         ],
     );
     refused(
-        "{A, H} = 0",
+        "A = 0",
         "when = \"I3 = 0\"\n",
         "A = 0",
         &["the condition sets I3 = 0, but H divides by I3"],
     );
+    let (line, named) = with("{A, H} = 0", "when = \"I3 = 0\"\n", "A = 0");
+    let err = named.expect_err("refused at the when");
+    assert_eq!(err.line_col(), Some((line - 1, 14)), "{err}");
+    assert!(err
+        .message
+        .contains("the condition sets I3 = 0, but H divides by I3"));
     refused(
         "{Gamma, H} = 0",
         "when = \"c = 0\"\n",

@@ -12,12 +12,9 @@ pub fn check(system: &System, identity: &str, when: Option<&Condition>) -> Outco
     let (lhs, rhs) = identity
         .split_once('=')
         .unwrap_or_else(|| panic!("{identity:?} is not an identity `lhs = rhs`"));
-    let parse = |side: &str| {
-        system
-            .parse(side.trim())
-            .unwrap_or_else(|e| panic!("{identity:?}: {e}"))
-    };
-    let mut claim = Claim::new("test", identity, parse(lhs), parse(rhs));
+    // Read with what the sides are computed from, as the paper's claims are.
+    let mut claim = Claim::parse(system, "test", identity, lhs.trim(), rhs.trim())
+        .unwrap_or_else(|e| panic!("{identity:?}: {e}"));
     if let Some(c) = when {
         claim = claim.when(c.clone());
     }
@@ -223,6 +220,7 @@ pub const TWO_TOWERS: &str = "name = \"oscillator\"\nhamiltonian = \"p_x^2/2 + x
 pub const PENDULUM: &str = "name = \"pendulum\"\nhamiltonian = \"p_t^2/2 - g*cos(t)\"\n\
                             [phase_space]\nangles = [\"t\"]\nparameters = [\"g\"]\n";
 
+mod claim_inputs;
 mod claims;
 mod cli;
 mod closure_denominators;

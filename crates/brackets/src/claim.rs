@@ -7,6 +7,7 @@ use std::time::Instant;
 use trigpoly::{AlgebraError, Expr, Rational, Style, Var, VarKind, Vars};
 
 use crate::error::EngineError;
+use crate::inputs::{Input, Recording};
 use crate::phase::PhaseSpace;
 use crate::system::System;
 
@@ -529,6 +530,16 @@ impl Condition {
         }
     }
 
+    /// Refuses the condition where it sets to zero a variable that one of `inputs` divides by
+    /// ([`Condition::defined_on`], each named by its [`Input::what`]): an expression computed
+    /// from them has no value there, even where it has cancelled the divisor (`{A, H} = 0` of
+    /// the heavy top at `I3 = 0`, where `H` divides by `I3`).
+    pub fn defined_on_inputs(&self, inputs: &[Input]) -> Result<(), EngineError> {
+        inputs
+            .iter()
+            .try_for_each(|i| self.defined_on(&[&i.value], &i.what))
+    }
+
     /// The first variable that `values` sets to zero and `e` divides by (holds to a negative
     /// power), if any: there `e` has no value (`p_x²/(2M)` at `M = 0`). The one check of a
     /// condition ([`Condition::defined_on`]) and of the values a plot gives its parameters.
@@ -607,6 +618,9 @@ pub struct Claim {
     pub rhs: Expr,
     /// Where the claim is meant to hold.
     pub condition: Option<Condition>,
+    /// What the sides were computed from ([`Claim::computed_from`]), each of which must have a
+    /// value at the condition.
+    pub inputs: Vec<Input>,
 }
 
 /// What checking a claim found.
@@ -685,7 +699,45 @@ impl Claim {
             lhs,
             rhs,
             condition: None,
+            inputs: Vec::new(),
         }
+    }
+
+    /// `lhs = rhs`, both read in `system` with what they are computed from
+    /// ([`System::parse_recording`]), so that a condition where one of those has no value is
+    /// refused. A claim made by [`Claim::new`] knows only its sides: at `I = 0` the harmonic
+    /// rotor's `{F2, L} = 0` is proved there, though `F2 = p_θ²/(2I)` has no value.
+    ///
+    /// ```
+    /// use brackets::{systems, Claim, Condition, EngineError};
+    /// use trigpoly::Expr;
+    ///
+    /// let rotor = systems::harmonic_rotor();
+    /// let at = |i: i64| {
+    ///     let v = rotor.lookup("I").unwrap();
+    ///     Condition::new(&format!("I = {i}"), v, Expr::constant(rotor.vars(), i.into()))
+    /// };
+    /// let read = Claim::parse(&rotor, "x", "{F2, L} = 0", "{F2, L}", "0")?;
+    /// assert!(read.clone().when(at(2)).check()?.outcome.is_proved());
+    /// let Err(EngineError::RefusedCondition { message, .. }) = read.when(at(0)).check() else {
+    ///     panic!("refused")
+    /// };
+    /// assert!(message.contains("the condition sets I = 0, but the function F2 divides by I"));
+    /// # Ok::<(), brackets::EngineError>(())
+    /// ```
+    pub fn parse(
+        system: &System,
+        id: &str,
+        statement: &str,
+        lhs: &str,
+        rhs: &str,
+    ) -> Result<Self, EngineError> {
+        let recording = Recording::new(system, system.space());
+        let read = |src: &str| {
+            Expr::parse_with(system.vars(), src, &recording).map_err(|e| EngineError::parse(src, e))
+        };
+        let (lhs, rhs) = (read(lhs)?, read(rhs)?);
+        Ok(Claim::new(id, statement, lhs, rhs).computed_from(recording.into_inputs()))
     }
 
     /// The same claim under a condition.
@@ -695,10 +747,20 @@ impl Claim {
         self
     }
 
-    /// The residual `lhs − rhs` after the condition, in normal form.
+    /// The same claim, its sides computed from `inputs` ([`System::parse_recording`]): a
+    /// condition where one of them has no value is refused ([`Condition::defined_on_inputs`]).
+    #[must_use]
+    pub fn computed_from(mut self, inputs: Vec<Input>) -> Self {
+        self.inputs = inputs;
+        self
+    }
+
+    /// The residual `lhs − rhs` after the condition, in normal form. Refused where the
+    /// condition sets to zero a variable that a side or an input divides by.
     pub fn residual(&self) -> Result<Expr, EngineError> {
         if let Some(c) = &self.condition {
             c.defined_on(&[&self.lhs, &self.rhs], "the claim")?;
+            c.defined_on_inputs(&self.inputs)?;
         }
         // `lhs − 0` is `lhs`: no copy before the condition.
         let d = if self.rhs.is_zero() {

@@ -24,6 +24,7 @@ mod claim;
 mod clearing;
 pub mod closure;
 mod error;
+mod inputs;
 pub mod linalg;
 pub mod modular;
 mod phase;
@@ -41,6 +42,7 @@ pub use closure::{
     Expressed, Relation,
 };
 pub use error::{EngineError, EngineLimit, JacobiViolation};
+pub use inputs::{Input, Recording};
 pub use phase::{CanonicalPair, DeclaredBracket, Gradient, PhaseSpace};
 pub use rank::{
     level_set_coordinates, rank, rank_on, rank_restricted, RankCertificate, UpperBound,

@@ -5,6 +5,7 @@ use trigpoly::{AlgebraError, BracketError, Context, Expr, GaussianRational, Var,
 
 use crate::claim::Condition;
 use crate::error::EngineError;
+use crate::inputs::{Input, Recording};
 use crate::phase::{Gradient, PhaseSpace};
 
 /// A named function of a system (`L`, `G1`, `Z̄`), or a generator of a closure.
@@ -289,6 +290,26 @@ impl System {
     /// ```
     pub fn parse(&self, src: &str) -> Result<Expr, EngineError> {
         Expr::parse_with(self.vars(), src, self).map_err(|e| EngineError::parse(src, e))
+    }
+
+    /// [`System::parse`], with what the expression was computed from: the functions it names
+    /// (`H` among them) and the declared brackets its brackets take ([`Recording`]), each of
+    /// which must have a value where a condition puts the expression
+    /// ([`Claim::computed_from`](crate::Claim::computed_from)).
+    ///
+    /// ```
+    /// let rotor = brackets::systems::harmonic_rotor();
+    /// let (bracket, inputs) = rotor.parse_recording("{F2, L} + H")?;
+    /// assert_eq!(bracket, rotor.parse("H")?);
+    /// let what: Vec<&str> = inputs.iter().map(|i| i.what.as_str()).collect();
+    /// assert_eq!(what, ["the function F2", "the function L", "H"]);
+    /// # Ok::<(), brackets::EngineError>(())
+    /// ```
+    pub fn parse_recording(&self, src: &str) -> Result<(Expr, Vec<Input>), EngineError> {
+        let recording = Recording::new(self, &self.space);
+        let e = Expr::parse_with(self.vars(), src, &recording)
+            .map_err(|e| EngineError::parse(src, e))?;
+        Ok((e, recording.into_inputs()))
     }
 
     /// `{f, g}`.

@@ -424,8 +424,8 @@ impl BesideLevelSet {
             BesideLevelSet::PhaseCondition { .. } => format!(
                 "its substitution does not commute with the bracket with H, so the level set \
                  would be taken on another flow; take the level set alone, or the condition \
-                 alone (parameters alone may be fixed beside it: by a claim's condition, or by \
-                 a search's {fix})"
+                 alone; parameters alone may be fixed beside it, by a claim's condition or by \
+                 a search's {fix}"
             ),
             BesideLevelSet::ParameterCondition => format!(
                 "a search on a level set fixes its parameters itself: give their values with \

@@ -1,0 +1,111 @@
+//! What an expression read from text was computed from: the functions it names (`H` among
+//! them) and the declared brackets its brackets take, so that a condition can be refused where
+//! one of them has no value ([`Condition::defined_on_inputs`](crate::Condition::defined_on_inputs)),
+//! though the expression computed from them has one (`{A, H} = 0` of the heavy top, whose `H`
+//! divides by `I3`, at `I3 = 0`).
+
+use std::cell::RefCell;
+
+use trigpoly::{BracketError, Context, Expr, GaussianRational, RunTogether, Var};
+
+use crate::PhaseSpace;
+
+/// One thing an expression was computed from: `H`, a function, or a declared bracket's value.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct Input {
+    /// How a refusal names it: `H`, `the function A`, `the bracket {M1, M2}`.
+    pub what: String,
+    /// Its value.
+    pub value: Expr,
+}
+
+/// A [`Context`] that reads as `context` does and keeps what the reading used: each name it
+/// looked up, and each declared bracket of `space` that a bracket it took pairs (`{a, b}` where
+/// one side involves `a` and the other `b`).
+#[derive(Debug)]
+pub struct Recording<'a, X> {
+    context: &'a X,
+    space: &'a PhaseSpace,
+    inputs: RefCell<Vec<Input>>,
+}
+
+impl<'a, X: Context<GaussianRational>> Recording<'a, X> {
+    /// Reads as `context`, in `space`, keeping what is used.
+    pub fn new(context: &'a X, space: &'a PhaseSpace) -> Self {
+        Recording {
+            context,
+            space,
+            inputs: RefCell::new(Vec::new()),
+        }
+    }
+
+    /// What the readings so far used, each once, in the order first used.
+    pub fn into_inputs(self) -> Vec<Input> {
+        self.inputs.into_inner()
+    }
+
+    fn keep(&self, what: String, value: &Expr) {
+        let mut inputs = self.inputs.borrow_mut();
+        if !inputs.iter().any(|i| i.what == what) {
+            inputs.push(Input {
+                what,
+                value: value.clone(),
+            });
+        }
+    }
+
+    /// Whether `f` involves the phase variable `v`: holds it, or a denominator atom or a
+    /// radical whose polynomial holds it (their brackets are formed from `v`'s).
+    fn involves(&self, f: &Expr, v: Var) -> bool {
+        let atoms = self.space.denominator_atoms().iter();
+        f.contains(v)
+            || atoms
+                .chain(self.space.radicals())
+                .any(|(atom, poly)| f.contains(*atom) && poly.contains(v))
+    }
+}
+
+impl<X: Context<GaussianRational>> Context<GaussianRational> for Recording<'_, X> {
+    fn lookup(&self, name: &str) -> Option<Expr> {
+        let value = self.context.lookup(name)?;
+        let what = match name {
+            "H" => "H".to_string(),
+            _ => format!("the function {name}"),
+        };
+        self.keep(what, &value);
+        Some(value)
+    }
+
+    fn bracket(&self, f: &Expr, g: &Expr) -> Result<Expr, BracketError> {
+        for d in self.space.declared_brackets() {
+            let (a, b) = (d.a, d.b);
+            let pairs = |x: &Expr, y: &Expr| self.involves(x, a) && self.involves(y, b);
+            if pairs(f, g) || pairs(g, f) {
+                let vars = d.value.vars();
+                let what = format!(
+                    "the bracket {{{}, {}}}",
+                    vars.variable(a).unicode(),
+                    vars.variable(b).unicode()
+                );
+                self.keep(what, &d.value);
+            }
+        }
+        self.context.bracket(f, g)
+    }
+
+    fn names(&self) -> Vec<String> {
+        self.context.names()
+    }
+
+    fn spelling(&self, name: &str) -> Option<String> {
+        self.context.spelling(name)
+    }
+
+    fn latex(&self, name: &str) -> Option<String> {
+        self.context.latex(name)
+    }
+
+    fn run_together(&self, noted: RunTogether) {
+        self.context.run_together(noted);
+    }
+}
