@@ -1071,9 +1071,17 @@ impl Shared {
                 .iter()
                 .zip(written)
                 .enumerate()
-                .map(|(k, (&i, w))| Equation {
-                    in_functions: restated.get(k).cloned().flatten(),
-                    ..Equation::new(&self.label(i), w.clone())
+                .map(|(k, (&i, w))| {
+                    // A new integral shown times denominators of parameters is labelled so:
+                    // `(a1 − a2)² I64`.
+                    let label = match shown_multiplier(r, i) {
+                        Ok(Some(u)) => format!("{} {}", u.render(Style::Unicode), self.label(i)),
+                        _ => self.label(i),
+                    };
+                    Equation {
+                        in_functions: restated.get(k).cloned().flatten(),
+                        ..Equation::new(&label, w.clone())
+                    }
                 })
                 .collect(),
         ))
@@ -1452,7 +1460,10 @@ fn written_forms(r: &SearchResult, shown: &[usize]) -> Result<Vec<Expr>, EngineE
         .map(|&i| {
             let e = r.basis[i].expr();
             if with_atoms {
-                return e.over_common_denominators();
+                return match shown_multiplier(r, i)? {
+                    Some(u) => u.checked_mul(e)?.over_common_denominators(),
+                    None => e.over_common_denominators(),
+                };
             }
             if with_radicals {
                 let least = e.with_least_radical_powers()?;
@@ -1464,6 +1475,25 @@ fn written_forms(r: &SearchResult, shown: &[usize]) -> Result<Vec<Expr>, EngineE
         })
         .collect::<Result<_, _>>()
         .map_err(EngineError::from)
+}
+
+/// The product of declared denominators of parameters by which new integral `i` is shown
+/// ([`NewIntegrals::multipliers`]): `(a1 − a2)²` of `(a1 − a2)² I64 = x1² + x2² + x3²`.
+fn shown_multiplier(r: &SearchResult, i: usize) -> Result<Option<Expr>, trigpoly::AlgebraError> {
+    let Some(n) = &r.new else {
+        return Ok(None);
+    };
+    let Some(multiplier) = (n.new.iter().position(|&k| k == i)).map(|at| &n.multipliers[at]) else {
+        return Ok(None);
+    };
+    if multiplier.is_empty() {
+        return Ok(None);
+    }
+    let mut exponents = vec![0i64; r.vars.len()];
+    for &(atom, e) in multiplier {
+        exponents[atom.index()] = e;
+    }
+    Expr::from_terms(&r.vars, vec![(GaussianRational::from(1), exponents)]).map(Some)
 }
 
 /// A level set as the report shows it: `M1γ1 + M2γ2 + M3γ3 = 0`.

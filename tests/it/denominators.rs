@@ -650,12 +650,51 @@ fn a_search_counts_multiples_by_a_denominator_of_parameters_as_generated() {
     );
     // From `H` alone (the file cut before its functions) the Casimirs and Uhlenbeck's
     // integrals are new, the constants not.
-    let file = std::fs::read_to_string("systems/neumann.toml").expect("the file reads");
-    let bare = &file[..file.find("[[function]]").expect("functions")];
-    let f = scratch_text("denominators-of-parameters", "neumann-bare.toml", bare);
-    let out = search(f.to_str().unwrap());
+    let out = search(&neumann_from_h_alone("denominators-of-parameters"));
     assert!(out.contains("New integrals:"), "{out}");
     assert!(!out.contains("= 1/("), "{out}");
+}
+
+/// `systems/neumann.toml` cut before its functions, so that nothing but `H` is known, written
+/// in the scratch directory `dir`.
+fn neumann_from_h_alone(dir: &str) -> String {
+    let file = std::fs::read_to_string("systems/neumann.toml").expect("the file reads");
+    let bare = &file[..file.find("[[function]]").expect("functions")];
+    let f = scratch_text(dir, "neumann-bare.toml", bare);
+    f.to_str().expect("a UTF-8 path").to_string()
+}
+
+/// From `H` alone, the Neumann system's new integrals of degree 2 for every `a_i` are the
+/// Casimirs `Q = |x|²`, `A = L·x` and one of Uhlenbeck's, `F1 − Q`, each once and shown with
+/// the least denominator: a new integral joins what is generated, with its multiples and
+/// quotients by the parameters and their declared denominators, before the next one of its
+/// degree is judged (`Q/((a1 − a2)(a1 − a3))` was new beside `Q/(a1 − a2)²`, 14 in all, and
+/// each over two denominators).
+#[test]
+fn neumann_casimirs_and_one_uhlenbeck_integral_are_new_from_h_alone() {
+    let out = new_only_with_a_symbolic(&neumann_from_h_alone("neumann-from-h"));
+    assert!(
+        out.contains("the generated ones span 104 of the 107 dimensions"),
+        "{out}"
+    );
+    // The list, up to its first claim `{I…, H} = 0`.
+    let block = out
+        .split("New integrals: ")
+        .nth(1)
+        .and_then(|rest| rest.split(" {").next())
+        .expect("a list of new integrals");
+    assert_eq!(block.matches(" = ").count(), 3, "{out}");
+    for form in [
+        "= x1² + x2² + x3² (",
+        "= L2²/(a1 − a3) + L3²/(a1 − a2) − x2² − x3² (",
+        "= L1 x1 + L2 x2 + L3 x3",
+    ] {
+        assert!(block.contains(form), "{form}: {out}");
+    }
+    // Each labelled by the denominators it is multiplied by, its basis integral proved.
+    assert!(block.starts_with("(a1 − a2"), "{out}");
+    assert!(!block.contains("(x1² + x2² + x3²)/"), "{out}");
+    assert_eq!(out.matches(", H} = 0").count(), 4, "{out}");
 }
 
 /// The rule `--new-only` prints for parameters kept symbolic names the declared denominators

@@ -11,7 +11,8 @@ use super::level_set::OnLevel;
 use super::locate::{ClearedBasis, Locator};
 use super::options::{SearchOptions, SearchSpace};
 use super::parameters::{
-    fix_parameters, free_parameters, without_parameter_denominators, Multiple,
+    fix_parameters, free_parameters, parameter_denominators, without_parameter_denominators,
+    Multiple,
 };
 use super::problem::{AtValues, Problem, Slot};
 use super::proof::{is_phase_free, lead};
@@ -44,6 +45,16 @@ pub(super) fn new_integrals(
     let grading = Grading::new(&problem.variables, space.trig_degree).with_stand_ins(&problem.vars);
     let gens = known_and_basis_generators(system, problem, &grading, &known, basis)?;
     let grades: Vec<i64> = basis.iter().map(|b| grading.grade(&b.fixed)).collect();
+    let of_parameters: Vec<Var> = parameter_denominators(
+        problem,
+        system.space().denominator_atoms(),
+        &options.symbolic,
+    )
+    .collect();
+    let denominator_degrees: Vec<i64> = basis
+        .iter()
+        .map(|b| denominator_degree(&b.fixed, &of_parameters))
+        .collect();
     let complement = Complement {
         locator: &locator,
         problem,
@@ -59,14 +70,20 @@ pub(super) fn new_integrals(
         laurent: space.laurent || related,
         leads: Leads::of(kernel, problem.unknowns.len()),
         order: by_grade(&grades),
+        divided_order: by_grade_and_denominators(&grades, &denominator_degrees),
         grades,
         max_products: options.max_products,
     };
     let (new, products) = complement.new_and_products(options.exact_complement)?;
+    let multipliers = new
+        .iter()
+        .map(|&k| least_denominator_multiplier(problem, &locator, &basis[k].fixed, &of_parameters))
+        .collect::<Result<Vec<_>, EngineError>>()?;
     Ok(NewIntegrals {
         known: known_names,
         generated: basis.len() - new.len(),
         new,
+        multipliers,
         products,
         past_degree_undecided: past_degree_undecided(problem, &complement.gens)?,
     })
@@ -171,6 +188,60 @@ fn by_grade(grades: &[i64]) -> Vec<usize> {
     order
 }
 
+/// The indices of the basis integrals by increasing grade, then by increasing degree in the
+/// denominators of parameters (`denominator_degrees`), then in their order: of the forms
+/// `Q/(a1 − a2)²`, `Q/(a1 − a2)`, `Q` of one integral, `Q` is judged first.
+fn by_grade_and_denominators(grades: &[i64], denominator_degrees: &[i64]) -> Vec<usize> {
+    let mut order: Vec<usize> = (0..grades.len()).collect();
+    order.sort_by_key(|&k| (grades[k], denominator_degrees[k], k));
+    order
+}
+
+/// The largest degree of a term of `f` in the denominator `atoms` (`1/((a1 − a2)² (a1 − a3))`
+/// has degree 3 in them).
+fn denominator_degree(f: &Expr, atoms: &[Var]) -> i64 {
+    f.terms()
+        .map(|t| atoms.iter().map(|&v| (-t.exponent(v)).max(0)).sum())
+        .max()
+        .unwrap_or(0)
+}
+
+/// The product `u` of declared denominators of parameters (`atoms`), as exponents by atom, that
+/// gives `u·X` the least degree in them, for an integral `X` of the space: one atom at a time,
+/// while `u·X` lies in the space and its degree in them drops (`(a1 − a2)²` for `X = Q/(a1 −
+/// a2)²`). Each atom is a polynomial in the parameters, nonzero, so `u·X` and `X` generate
+/// each other where the parameters and these denominators may be divided by. Empty where no
+/// atom lowers it.
+fn least_denominator_multiplier(
+    problem: &Problem,
+    locator: &Locator<'_>,
+    x: &Expr,
+    atoms: &[Var],
+) -> Result<Vec<(Var, i64)>, EngineError> {
+    let mut multiplier: Vec<(Var, i64)> = Vec::new();
+    let (mut current, mut degree) = (x.clone(), denominator_degree(x, atoms));
+    'lower: while degree > 0 {
+        for &atom in atoms {
+            let times = current.checked_mul(&Expr::var(&problem.vars, atom))?;
+            let Some(v) = locator.coordinates(&times)? else {
+                continue;
+            };
+            let times = problem.combination(&v)?;
+            let lower = denominator_degree(&times, atoms);
+            if lower < degree {
+                (current, degree) = (times, lower);
+                match multiplier.iter_mut().find(|m| m.0 == atom) {
+                    Some(m) => m.1 += 1,
+                    None => multiplier.push((atom, 1)),
+                }
+                continue 'lower;
+            }
+        }
+        break;
+    }
+    Ok(multiplier)
+}
+
 /// What decides which basis integrals are new: the basis, graded, and what the span of the
 /// generated integrals is formed from.
 struct Complement<'a> {
@@ -195,6 +266,10 @@ struct Complement<'a> {
     /// Each basis integral's grade, and the basis integrals by increasing grade.
     grades: Vec<i64>,
     order: Vec<usize>,
+    /// The basis integrals by increasing grade and, within a grade, by increasing degree in
+    /// the denominators of parameters: the order in which [`Complement::decide_divided`]
+    /// judges them, so that the form with the least denominator is the one found new.
+    divided_order: Vec<usize>,
     /// The most products to form.
     max_products: usize,
 }
@@ -298,11 +373,14 @@ impl Complement<'_> {
     }
 
     /// The basis integrals that are new when parameters may be divided by, by increasing
-    /// grade g, over Q: the `generated` vectors (known integrals, constants, products) of
-    /// stamps below g and the new integrals of grades below g join a [`Divided`] span, which
-    /// holds `X` wherever it holds `a·X` and holds `a·X` wherever it holds `X` (`a·X` in the
-    /// space); the basis integral of grade g is new unless it lies in the span of that, of the
-    /// parameter multiples of integrals of grade `≤ g` and of the new ones of grade g so far.
+    /// grade g (within it, by increasing degree in the denominators of parameters), over Q:
+    /// the `generated` vectors (known integrals, constants, products) of stamps below g and
+    /// each new integral as soon as it is found join a [`Divided`] span, which holds `X`
+    /// wherever it holds `a·X` and holds `a·X` wherever it holds `X` (`a·X` in the space); the
+    /// basis integral of grade g is new unless it lies in the span of that and of the
+    /// parameter multiples of integrals of grade `≤ g`. So no new integral is a quotient of
+    /// another of its grade (`Q/((a1 − a2)(a1 − a3))` of `Q/(a1 − a2)²`, whose multiples by
+    /// `a1 − a3` and `a1 − a2` are one).
     fn decide_divided(&self, generated: &[(i64, SparseVec<Rational>)]) -> Vec<usize> {
         let rows = self.problem.unknowns.len();
         let mut divided = Divided::new(self.multiples, rows);
@@ -311,18 +389,13 @@ impl Complement<'_> {
         let mut q = Echelon::<Rational>::new(rows);
         let (mut ids, mut next_generated, mut next_multiple, mut joined) = (0, 0, 0, 0);
         let mut new: Vec<usize> = Vec::new();
-        let mut new_joined = 0;
         let mut grade = None;
-        for &k in &self.order {
+        for &k in &self.divided_order {
             let g = self.grades[k];
             if grade != Some(g) {
                 grade = Some(g);
-                // The new integrals of lower grades and the generated vectors below g, with
-                // what dividing and multiplying by the parameters gives of them.
-                for &n in &new[new_joined..] {
-                    divided.add(self.kernel[n].clone());
-                }
-                new_joined = new.len();
+                // The generated vectors below g, with what dividing and multiplying by the
+                // parameters gives of them (the new integrals joined when they were found).
                 while next_generated < generated.len() && generated[next_generated].0 < g {
                     divided.add(generated[next_generated].1.clone());
                     next_generated += 1;
@@ -339,10 +412,21 @@ impl Complement<'_> {
                     next_multiple += 1;
                 }
             }
-            if q.insert(ids, &self.kernel[k]).is_none() {
-                new.push(k);
-            }
+            let found_new = q.insert(ids, &self.kernel[k]).is_none();
             ids += 1;
+            if found_new {
+                // What it generates over the parameters and their denominators joins the span
+                // before the next integral of its grade is judged: once `Q` is new,
+                // `Q/(a1 − a2)` is not.
+                new.push(k);
+                divided.add(self.kernel[k].clone());
+                divided.close();
+                for v in &divided.vectors[joined..] {
+                    q.extend(ids, v);
+                    ids += 1;
+                }
+                joined = divided.vectors.len();
+            }
         }
         new.sort_unstable();
         new

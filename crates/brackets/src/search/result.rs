@@ -120,6 +120,11 @@ pub struct NewIntegrals {
     /// Indices into the basis of a complement: the integrals that nothing known generates,
     /// decided by increasing grade.
     pub new: Vec<usize>,
+    /// For each new integral, the product of declared denominators of parameters kept
+    /// symbolic (each atom with its exponent) by which it is shown, the least degree in them
+    /// it takes in the space: `(a1 − a2)² I64 = x1² + x2² + x3²`. Empty where it is shown as
+    /// it is, and always without such denominators.
+    pub multipliers: Vec<Vec<(Var, i64)>>,
     /// How many products were formed.
     pub products: usize,
     /// On a level set, whether a product past the space's total degree might fall back into it
