@@ -7,7 +7,7 @@ use std::time::Instant;
 
 use brackets::search::LevelReduction;
 use brackets::{
-    level_set_coordinates, rank, rank_restricted, Claim, Condition, EngineError, Input, Recording,
+    level_set_coordinates, rank, rank_restricted, Claim, Condition, EngineError, Input,
 };
 use toml::Spanned;
 use trigpoly::syntax::{Expr as Tree, ExprKind};
@@ -466,7 +466,7 @@ fn claim_condition(
 /// here; checking the claim says why.
 fn claim_inputs(file: &LoadedSystem, source: &Source, form: &ClaimForm) -> (Vec<Expr>, Vec<Input>) {
     let scope = file.scope(file.families.len());
-    let recording = Recording::new(&scope, file.system.space());
+    let recording = scope.recording();
     let texts: Vec<&Text> = match form {
         ClaimForm::Identity { lhs, rhs } => vec![lhs, rhs],
         ClaimForm::Rank { functions, .. } => functions.iter().map(|(_, t)| t).collect(),
@@ -985,7 +985,7 @@ impl LoadedSystem {
             ClaimForm::Identity { lhs, rhs } => {
                 let l_tree = scope.tree(&spec.source, lhs)?;
                 let r_tree = scope.tree(&spec.source, rhs)?;
-                let recording = Recording::new(&scope, self.system.space());
+                let recording = scope.recording();
                 let l = scope.lower_with(&spec.source, lhs, &l_tree, &recording)?;
                 let r = scope.lower_with(&spec.source, rhs, &r_tree, &recording)?;
                 let inputs = recording.into_inputs();
@@ -1059,7 +1059,7 @@ impl LoadedSystem {
                 functions,
                 expected,
             } => {
-                let recording = Recording::new(&scope, self.system.space());
+                let recording = scope.recording();
                 let mut exprs: Vec<Expr> = functions
                     .iter()
                     .map(|(_, t)| {

@@ -64,10 +64,11 @@ impl LoadedSystem {
         check_display_in(&origin, display)?;
         self.check_printed_apart(&origin, name, display)?;
         let source = Source::program_about(&self.source, &origin, value);
-        let value = self
+        let (value, inputs) = self
             .scope(self.families.len())
-            .parse(&source, &Text::whole(&source))?;
+            .parse_recorded(&source, &Text::whole(&source))?;
         self.system.define(name, display, value)?;
+        self.keep_computed_from(name.to_string(), inputs);
         Ok(())
     }
 

@@ -1343,6 +1343,7 @@ impl<'a> Builder<'a> {
             limits,
             caller: super::Caller::Program,
             cache: Mutex::new(HashMap::new()),
+            computed_from: Mutex::new(HashMap::new()),
             warnings: Warnings::default(),
             radicands: declared_radicals(model.phase_space.get_ref())
                 .iter()
@@ -1400,9 +1401,9 @@ impl<'a> Builder<'a> {
         for (k, f) in model.function.iter().enumerate() {
             let f = f.get_ref();
             self.declare(f.name.get_ref(), f.name.span(), "a function")?;
-            let value = file
+            let (value, inputs) = file
                 .scope(0)
-                .parse(&self.source, &self.text(&f.value))
+                .parse_recorded(&self.source, &self.text(&f.value))
                 .map_err(|e| {
                     let e = later_function(e, &model.function[k + 1..], |name| {
                         format!(
@@ -1425,6 +1426,7 @@ impl<'a> Builder<'a> {
             let span = f.display.as_ref().unwrap_or(&f.name).span();
             self.check_shown_apart(&whose, f.name.get_ref(), display, span)?;
             file.system.define(f.name.get_ref(), display, value)?;
+            file.keep_computed_from(f.name.get_ref().clone(), inputs);
         }
         Ok(())
     }

@@ -248,6 +248,10 @@ pub struct LoadedSystem {
     caller: Caller,
     /// Expanded family instances: `(family, m, n)`.
     cache: Mutex<HashMap<(usize, i64, i64), Expr>>,
+    /// What each function's and expanded instance's value was computed from, by its name
+    /// (`K_1_2` for an instance), which must have a value wherever it has one
+    /// ([`LoadedSystem::computed_from`]).
+    computed_from: Mutex<HashMap<String, Vec<brackets::Input>>>,
     /// Each radical's radicand as `[phase_space] radicals` writes it, by the radical's name
     /// (`s`, `1 + g2*(x^2 + y^2)`), which a report shows (the variables keep its normal form).
     radicands: Vec<(String, String)>,
@@ -394,6 +398,12 @@ impl Clone for LoadedSystem {
             limits: self.limits,
             caller: self.caller,
             cache: Mutex::new(cache),
+            computed_from: Mutex::new(
+                self.computed_from
+                    .lock()
+                    .unwrap_or_else(std::sync::PoisonError::into_inner)
+                    .clone(),
+            ),
             radicands: self.radicands.clone(),
             warnings: self.warnings.clone(),
         }
@@ -425,6 +435,7 @@ impl LoadedSystem {
             claims: Vec::new(),
             caller: Caller::Program,
             cache: Mutex::new(HashMap::new()),
+            computed_from: Mutex::new(HashMap::new()),
             radicands: Vec::new(),
             warnings: Warnings::default(),
         }

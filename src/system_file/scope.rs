@@ -9,7 +9,7 @@
 use std::cell::RefCell;
 use std::collections::HashMap;
 
-use brackets::{EngineError, EngineLimit};
+use brackets::{EngineError, EngineLimit, Input, Recording};
 
 use num_bigint::BigInt;
 use trigpoly::syntax::{is_name_continue, is_name_start, Expr as Tree, ExprKind, ParseError};
@@ -766,10 +766,23 @@ impl<'a> Scope<'a> {
         }
     }
 
-    /// Parses a text of `source` into a polynomial.
-    pub(crate) fn parse(&self, source: &Source, text: &Text) -> Result<Expr, FileError> {
+    /// A [`Recording`] of what a reading in this scope uses, each function and family
+    /// instance with what its value was computed from ([`LoadedSystem::computed_from`]).
+    pub(crate) fn recording(&self) -> Recording<'_, Self> {
+        Recording::new(self, self.file.system.space()).through(|name| self.file.computed_from(name))
+    }
+
+    /// Parses a text of `source` into a polynomial, with what the value was computed from
+    /// ([`Scope::recording`]).
+    pub(crate) fn parse_recorded(
+        &self,
+        source: &Source,
+        text: &Text,
+    ) -> Result<(Expr, Vec<Input>), FileError> {
         let tree = self.tree(source, text)?;
-        self.lower(source, text, &tree)
+        let recording = self.recording();
+        let value = self.lower_with(source, text, &tree, &recording)?;
+        Ok((value, recording.into_inputs()))
     }
 
     /// Parses a text into a tree (family instances written `K_{2,3}` are accepted).
@@ -1244,8 +1257,33 @@ impl<'a> Scope<'a> {
 impl LoadedSystem {
     /// The instance `(m, n)` of family `k`, computed (not cached), in a scope that sees the
     /// families before it.
+    /// What it was computed from is kept ([`LoadedSystem::computed_from`]).
     pub(crate) fn compute_instance(&self, k: usize, m: i64, n: i64) -> Result<Expr, FileError> {
-        self.family_text_at(k, &self.families[k].value, m, n)
+        let family = &self.families[k];
+        let (value, inputs) = self.family_text_recorded(k, &family.value, m, n)?;
+        self.keep_computed_from(format!("{}_{m}_{n}", family.name), inputs);
+        Ok(value)
+    }
+
+    /// What the value of the function or family instance `name` was computed from: the
+    /// functions, instances and declared brackets its text used, and what those were computed
+    /// from, each of which must have a value where the function has one. Empty for a name
+    /// whose value was given as an expression ([`LoadedSystem::add_function_expr`]).
+    pub(crate) fn computed_from(&self, name: &str) -> Vec<Input> {
+        let key = match instance_of(&self.families, name) {
+            Some((k, m, n)) => format!("{}_{m}_{n}", self.families[k].name),
+            None => name.to_string(),
+        };
+        let kept = self.computed_from.lock();
+        let kept = kept.unwrap_or_else(std::sync::PoisonError::into_inner);
+        kept.get(&key).cloned().unwrap_or_default()
+    }
+
+    /// Keeps what the value of `name` was computed from ([`LoadedSystem::computed_from`]).
+    pub(crate) fn keep_computed_from(&self, name: String, inputs: Vec<Input>) {
+        let kept = self.computed_from.lock();
+        let mut kept = kept.unwrap_or_else(std::sync::PoisonError::into_inner);
+        kept.insert(name, inputs);
     }
 
     /// A text of family `k` (its value or its eigenvalue) at `(m, n)`.
@@ -1256,11 +1294,25 @@ impl LoadedSystem {
         m: i64,
         n: i64,
     ) -> Result<Expr, FileError> {
+        Ok(self.family_text_recorded(k, text, m, n)?.0)
+    }
+
+    /// [`LoadedSystem::family_text_at`], with what the value was computed from
+    /// ([`Scope::recording`]).
+    fn family_text_recorded(
+        &self,
+        k: usize,
+        text: &Text,
+        m: i64,
+        n: i64,
+    ) -> Result<(Expr, Vec<Input>), FileError> {
         let family = &self.families[k];
         let scope = Scope::of_family(self, k);
         let tree = scope.tree(&family.source, text)?;
         let tree = substitute(&tree, &family.indices, [m, n], &self.families[..k]);
-        scope.lower(&family.source, text, &tree)
+        let recording = scope.recording();
+        let value = scope.lower_with(&family.source, text, &tree, &recording)?;
+        Ok((value, recording.into_inputs()))
     }
 }
 

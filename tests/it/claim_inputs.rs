@@ -104,6 +104,46 @@ fn a_condition_where_a_declared_bracket_or_a_function_divides_by_zero_is_refused
     assert!(!proved(&with(OVER_X, "{F, p_x} = 0", "x = 1").0));
 }
 
+/// A particle whose `G = x F` and family `K_{m,n} = x^m F^n` are computed from `F = p_y/x`:
+/// their values (`G = p_y`, `K_{1,1} = p_y`) have no `1/x` left.
+const THROUGH_F: &str = r#"name = "free particle"
+hamiltonian = "(p_x^2 + p_y^2)/2"
+[phase_space]
+coordinates = ["x", "y"]
+[[function]]
+name = "F"
+value = "p_y/x"
+[[function]]
+name = "G"
+value = "x*F"
+[[family]]
+name = "K"
+value = "x^m*F^n"
+"#;
+
+/// A function or family instance computed from a function that divides by `x` has no value
+/// at `x = 0`, though its own value has cancelled the divisor: `{G, p_y} = 0`,
+/// `{K_{1,1}, p_y} = 0` and `rank(G, p_x) = 2` were proved there. Refused at the `when`'s
+/// value, naming the function that divides; at `y = 0` the claim is proved, and a false one
+/// at `x = 1` refuted.
+#[test]
+fn a_function_computed_from_one_that_divides_by_zero_at_the_condition_is_refused() {
+    let with = |claim: &str, when: &str| {
+        let text =
+            format!("{THROUGH_F}[[claim]]\nid = \"x\"\nclaim = \"{claim}\"\nwhen = \"{when}\"\n");
+        let line = text.lines().count();
+        (text, line)
+    };
+    let f_divides = "the condition sets x = 0, but the function F divides by x";
+    for claim in ["{G, p_y} = 0", "{K_1_1, p_y} = 0", "rank(G, p_x) = 2"] {
+        let (text, line) = with(claim, "x = 0");
+        refused_at(&text, (line, 13), f_divides);
+    }
+    assert!(proved(&with("{G, p_y} = 0", "y = 0").0));
+    assert!(proved(&with("{K_1_1, p_y} = 0", "y = 0").0));
+    assert!(!proved(&with("{G, y} = 0", "x = 1").0));
+}
+
 /// `superint check` of the heavy top with `{A, H} = 0` at `I3 = 0` exited 0 with the claim
 /// proved: it exits 2 with the refusal at the `when`.
 #[test]

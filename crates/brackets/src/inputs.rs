@@ -20,13 +20,26 @@ pub struct Input {
 }
 
 /// A [`Context`] that reads as `context` does and keeps what the reading used: each name it
-/// looked up, and each declared bracket of `space` that a bracket it took pairs (`{a, b}` where
-/// one side involves `a` and the other `b`).
-#[derive(Debug)]
+/// looked up, what that name was itself computed from where it is told ([`Recording::through`]),
+/// and each declared bracket of `space` that a bracket it took pairs (`{a, b}` where one side
+/// involves `a` and the other `b`).
 pub struct Recording<'a, X> {
     context: &'a X,
     space: &'a PhaseSpace,
+    /// What a name's value was computed from (`F` for `G = x F`), kept beside the name.
+    through: Option<ComputedFrom<'a>>,
     inputs: RefCell<Vec<Input>>,
+}
+
+/// What a name's value was computed from, asked by its name ([`Recording::through`]).
+type ComputedFrom<'a> = Box<dyn Fn(&str) -> Vec<Input> + 'a>;
+
+impl<X> std::fmt::Debug for Recording<'_, X> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Recording")
+            .field("inputs", &self.inputs)
+            .finish_non_exhaustive()
+    }
 }
 
 impl<'a, X: Context<GaussianRational>> Recording<'a, X> {
@@ -35,8 +48,18 @@ impl<'a, X: Context<GaussianRational>> Recording<'a, X> {
         Recording {
             context,
             space,
+            through: None,
             inputs: RefCell::new(Vec::new()),
         }
+    }
+
+    /// The same recording, keeping beside each name looked up what `computed_from` says its
+    /// value was computed from: a function defined through another that divides (`G = x F`,
+    /// `F = p_y/x`, whose `G = p_y` has no `1/x` left) has no value where that one has none.
+    #[must_use]
+    pub fn through(mut self, computed_from: impl Fn(&str) -> Vec<Input> + 'a) -> Self {
+        self.through = Some(Box::new(computed_from));
+        self
     }
 
     /// What the readings so far used, each once, in the order first used.
@@ -44,13 +67,10 @@ impl<'a, X: Context<GaussianRational>> Recording<'a, X> {
         self.inputs.into_inner()
     }
 
-    fn keep(&self, what: String, value: &Expr) {
+    fn keep(&self, input: Input) {
         let mut inputs = self.inputs.borrow_mut();
-        if !inputs.iter().any(|i| i.what == what) {
-            inputs.push(Input {
-                what,
-                value: value.clone(),
-            });
+        if !inputs.iter().any(|i| i.what == input.what) {
+            inputs.push(input);
         }
     }
 
@@ -72,7 +92,13 @@ impl<X: Context<GaussianRational>> Context<GaussianRational> for Recording<'_, X
             "H" => "H".to_string(),
             _ => format!("the function {name}"),
         };
-        self.keep(what, &value);
+        self.keep(Input {
+            what,
+            value: value.clone(),
+        });
+        if let Some(through) = &self.through {
+            through(name).into_iter().for_each(|i| self.keep(i));
+        }
         Some(value)
     }
 
@@ -87,7 +113,10 @@ impl<X: Context<GaussianRational>> Context<GaussianRational> for Recording<'_, X
                     vars.variable(a).unicode(),
                     vars.variable(b).unicode()
                 );
-                self.keep(what, &d.value);
+                self.keep(Input {
+                    what,
+                    value: d.value.clone(),
+                });
             }
         }
         self.context.bracket(f, g)
