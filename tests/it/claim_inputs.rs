@@ -74,18 +74,20 @@ name = "F"
 value = "p_y/x"
 "#;
 
+/// `system`'s text with one more claim `id = "x"` under `when`, and the line of its `when`.
+fn with_claim(system: &str, claim: &str, when: &str) -> (String, usize) {
+    let text = format!("{system}[[claim]]\nid = \"x\"\nclaim = \"{claim}\"\nwhen = \"{when}\"\n");
+    let line = text.lines().count();
+    (text, line)
+}
+
 /// A condition that sets to 0 a parameter a declared bracket divides by, or a phase variable
 /// a named function divides by, is refused at its value: `{C, M1} = 0` (the Casimir's bracket,
 /// 0 for every `k ≠ 0`) and `{F, p_y} = 0` (`F = p_y/x`) were proved there. Elsewhere the true
 /// claim is proved and a false one refuted.
 #[test]
 fn a_condition_where_a_declared_bracket_or_a_function_divides_by_zero_is_refused() {
-    let with = |system: &str, claim: &str, when: &str| {
-        let text =
-            format!("{system}[[claim]]\nid = \"x\"\nclaim = \"{claim}\"\nwhen = \"{when}\"\n");
-        let line = text.lines().count();
-        (text, line)
-    };
+    let with = with_claim;
     let (text, line) = with(SCALED_BODY, "{C, M1} = 0", "k = 0");
     refused_at(
         &text,
@@ -104,22 +106,14 @@ fn a_condition_where_a_declared_bracket_or_a_function_divides_by_zero_is_refused
     assert!(!proved(&with(OVER_X, "{F, p_x} = 0", "x = 1").0));
 }
 
-/// A particle whose `G = x F` and family `K_{m,n} = x^m F^n` are computed from `F = p_y/x`:
+/// [`OVER_X`] with `G = x F` and the family `K_{m,n} = x^m F^n`, computed from `F = p_y/x`:
 /// their values (`G = p_y`, `K_{1,1} = p_y`) have no `1/x` left.
-const THROUGH_F: &str = r#"name = "free particle"
-hamiltonian = "(p_x^2 + p_y^2)/2"
-[phase_space]
-coordinates = ["x", "y"]
-[[function]]
-name = "F"
-value = "p_y/x"
-[[function]]
-name = "G"
-value = "x*F"
-[[family]]
-name = "K"
-value = "x^m*F^n"
-"#;
+fn through_f() -> String {
+    format!(
+        "{OVER_X}[[function]]\nname = \"G\"\nvalue = \"x*F\"\n\
+         [[family]]\nname = \"K\"\nvalue = \"x^m*F^n\"\n"
+    )
+}
 
 /// A function or family instance computed from a function that divides by `x` has no value
 /// at `x = 0`, though its own value has cancelled the divisor: `{G, p_y} = 0`,
@@ -128,12 +122,8 @@ value = "x^m*F^n"
 /// at `x = 1` refuted.
 #[test]
 fn a_function_computed_from_one_that_divides_by_zero_at_the_condition_is_refused() {
-    let with = |claim: &str, when: &str| {
-        let text =
-            format!("{THROUGH_F}[[claim]]\nid = \"x\"\nclaim = \"{claim}\"\nwhen = \"{when}\"\n");
-        let line = text.lines().count();
-        (text, line)
-    };
+    let system = through_f();
+    let with = |claim: &str, when: &str| with_claim(&system, claim, when);
     let f_divides = "the condition sets x = 0, but the function F divides by x";
     for claim in ["{G, p_y} = 0", "{K_1_1, p_y} = 0", "rank(G, p_x) = 2"] {
         let (text, line) = with(claim, "x = 0");
