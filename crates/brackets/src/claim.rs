@@ -691,7 +691,29 @@ impl std::fmt::Display for Verdict {
 }
 
 impl Claim {
-    /// `lhs = rhs`.
+    /// `lhs = rhs`, as bare expressions: the claim cannot see what they were computed from.
+    /// Under a condition it is refused only where `lhs` or `rhs` itself divides by a variable
+    /// set to 0, not where `H`, a function or a declared bracket they were computed from does
+    /// and the computation cancelled the divisor (`{F2, L}` of the harmonic rotor is 0, and so
+    /// proved at `I = 0`, though `F2 = p_θ²/(2I)` has no value there). Read the sides with
+    /// [`Claim::parse`], or give what they were computed from with [`Claim::computed_from`]
+    /// ([`System::parse_recording`]), for such a condition to be refused.
+    ///
+    /// ```
+    /// use brackets::{systems, Claim, Condition};
+    /// use trigpoly::Expr;
+    ///
+    /// let rotor = systems::harmonic_rotor();
+    /// let i = rotor.lookup("I").unwrap();
+    /// let at_zero = Condition::new("I = 0", i, Expr::zero(rotor.vars()));
+    /// let (bracket, inputs) = rotor.parse_recording("{F2, L}")?;
+    /// let zero = Expr::zero(rotor.vars());
+    /// let bare = Claim::new("x", "{F2, L} = 0", bracket.clone(), zero.clone());
+    /// assert!(bare.when(at_zero.clone()).check()?.outcome.is_proved());
+    /// let told = Claim::new("x", "{F2, L} = 0", bracket, zero).computed_from(inputs);
+    /// assert!(told.when(at_zero).check().is_err());
+    /// # Ok::<(), brackets::EngineError>(())
+    /// ```
     pub fn new(id: &str, statement: &str, lhs: Expr, rhs: Expr) -> Self {
         Claim {
             id: id.into(),

@@ -18,6 +18,11 @@
 //! assert!(claim.check()?.outcome.is_proved());
 //! # Ok::<(), brackets::EngineError>(())
 //! ```
+//!
+//! A claim made by [`Claim::new`] holds its sides as bare expressions and cannot see what they
+//! were computed from: under a condition that sets to 0 a variable `H` or a function divides
+//! by, where the bracket has cancelled the divisor, it is decided though it has no value.
+//! [`Claim::parse`] reads the sides in a system and refuses such a condition.
 #![deny(missing_docs, missing_debug_implementations)]
 
 mod claim;
