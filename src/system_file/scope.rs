@@ -769,7 +769,9 @@ impl<'a> Scope<'a> {
     /// A [`Recording`] of what a reading in this scope uses, each function and family
     /// instance with what its value was computed from ([`LoadedSystem::computed_from`]).
     pub(crate) fn recording(&self) -> Recording<'_, Self> {
-        Recording::new(self, self.file.system.space()).through(|name| self.file.computed_from(name))
+        Recording::new(self, self.file.system.space())
+            .through(|name| self.file.computed_from(name))
+            .showing(|name| self.file.display_name(name))
     }
 
     /// Parses a text of `source` into a polynomial, with what the value was computed from

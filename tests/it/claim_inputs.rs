@@ -118,20 +118,42 @@ fn through_f() -> String {
 /// A function or family instance computed from a function that divides by `x` has no value
 /// at `x = 0`, though its own value has cancelled the divisor: `{G, p_y} = 0`,
 /// `{K_{1,1}, p_y} = 0` and `rank(G, p_x) = 2` were proved there. Refused at the `when`'s
-/// value, naming the function that divides; at `y = 0` the claim is proved, and a false one
-/// at `x = 1` refuted.
+/// value, naming the claim's function (an instance as printed) and the function that divides;
+/// at `y = 0` the claim is proved, and a false one at `x = 1` refuted.
 #[test]
 fn a_function_computed_from_one_that_divides_by_zero_at_the_condition_is_refused() {
     let system = through_f();
     let with = |claim: &str, when: &str| with_claim(&system, claim, when);
-    let f_divides = "the condition sets x = 0, but the function F divides by x";
-    for claim in ["{G, p_y} = 0", "{K_1_1, p_y} = 0", "rank(G, p_x) = 2"] {
+    let computed_from_f = |g: &str| {
+        format!("x = 0, but the claim's {g} is computed from the function F, which divides by x")
+    };
+    for (claim, g) in [
+        ("{G, p_y} = 0", "G"),
+        ("{K_1_1, p_y} = 0", "K_{1,1}"),
+        ("rank(G, p_x) = 2", "G"),
+    ] {
         let (text, line) = with(claim, "x = 0");
-        refused_at(&text, (line, 13), f_divides);
+        refused_at(&text, (line, 13), &computed_from_f(g));
     }
     assert!(proved(&with("{G, p_y} = 0", "y = 0").0));
     assert!(proved(&with("{K_1_1, p_y} = 0", "y = 0").0));
     assert!(!proved(&with("{G, y} = 0", "x = 1").0));
+}
+
+/// A family instance that divides by `x` itself (`K_{0,1} = F = p_y/x`) was named in ASCII by
+/// the refusal, `the function K_0_1`: it is named as printed, however the claim writes it.
+#[test]
+fn a_refused_family_instance_is_named_as_printed() {
+    let system = through_f();
+    for written in ["K_0_1", "K_{0,1}"] {
+        let (text, line) = with_claim(&system, &format!("{{{written}, p_y}} = 0"), "x = 0");
+        refused_at(
+            &text,
+            (line, 13),
+            "the condition sets x = 0, but the function K_{0,1} divides by x",
+        );
+    }
+    assert!(proved(&with_claim(&system, "{K_0_1, p_y} = 0", "x = 2").0));
 }
 
 /// `superint check` of the heavy top with `{A, H} = 0` at `I3 = 0` exited 0 with the claim

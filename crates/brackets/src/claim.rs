@@ -7,7 +7,7 @@ use std::time::Instant;
 use trigpoly::{AlgebraError, Expr, Rational, Style, Var, VarKind, Vars};
 
 use crate::error::EngineError;
-use crate::inputs::{Input, Recording};
+use crate::inputs::{keep_once, Input};
 use crate::phase::PhaseSpace;
 use crate::system::System;
 
@@ -509,6 +509,12 @@ impl Condition {
     /// claim`). The refusal is an [`EngineError::RefusedCondition`] naming that variable, so
     /// that a caller holding the condition's text shows it at the variable's value there.
     pub fn defined_on(&self, sides: &[&Expr], what: &str) -> Result<(), EngineError> {
+        self.defined_saying(sides, what)
+    }
+
+    /// [`Condition::defined_on`], its message saying `who` divides by the variable (`the
+    /// function F`, or `the claim's G is computed from the function F, which`).
+    fn defined_saying(&self, sides: &[&Expr], who: &str) -> Result<(), EngineError> {
         for side in sides {
             self.within(side.vars())?;
         }
@@ -521,7 +527,7 @@ impl Condition {
                 Err(refused(
                     v,
                     format!(
-                        "the condition sets {name} = 0, but {what} divides by {name}: give \
+                        "the condition sets {name} = 0, but {who} divides by {name}: give \
                          {name} a value other than 0, or leave it free"
                     ),
                 ))
@@ -531,13 +537,18 @@ impl Condition {
     }
 
     /// Refuses the condition where it sets to zero a variable that one of `inputs` divides by
-    /// ([`Condition::defined_on`], each named by its [`Input::what`]): an expression computed
-    /// from them has no value there, even where it has cancelled the divisor (`{A, H} = 0` of
-    /// the heavy top at `I3 = 0`, where `H` divides by `I3`).
+    /// ([`Condition::defined_on`], each named by its [`Input::what`], and by the name of the
+    /// claim's that was computed from it, [`Input::via`]): an expression computed from them has
+    /// no value there, even where it has cancelled the divisor (`{A, H} = 0` of the heavy top
+    /// at `I3 = 0`, where `H` divides by `I3`).
     pub fn defined_on_inputs(&self, inputs: &[Input]) -> Result<(), EngineError> {
-        inputs
-            .iter()
-            .try_for_each(|i| self.defined_on(&[&i.value], &i.what))
+        inputs.iter().try_for_each(|i| match &i.via {
+            Some(via) => self.defined_saying(
+                &[&i.value],
+                &format!("the claim's {via} is computed from {}, which", i.what),
+            ),
+            None => self.defined_on(&[&i.value], &i.what),
+        })
     }
 
     /// The first variable that `values` sets to zero and `e` divides by (holds to a negative
@@ -754,12 +765,10 @@ impl Claim {
         lhs: &str,
         rhs: &str,
     ) -> Result<Self, EngineError> {
-        let recording = Recording::new(system, system.space());
-        let read = |src: &str| {
-            Expr::parse_with(system.vars(), src, &recording).map_err(|e| EngineError::parse(src, e))
-        };
-        let (lhs, rhs) = (read(lhs)?, read(rhs)?);
-        Ok(Claim::new(id, statement, lhs, rhs).computed_from(recording.into_inputs()))
+        let (lhs, mut inputs) = system.parse_recording(lhs)?;
+        let (rhs, more) = system.parse_recording(rhs)?;
+        more.into_iter().for_each(|i| keep_once(&mut inputs, i));
+        Ok(Claim::new(id, statement, lhs, rhs).computed_from(inputs))
     }
 
     /// The same claim under a condition.

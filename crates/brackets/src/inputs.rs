@@ -17,10 +17,20 @@ pub struct Input {
     pub what: String,
     /// Its value.
     pub value: Expr,
+    /// The name, as shown, of what the expression named that was computed from it (`G` for
+    /// `F` where `G = x F`), or `None` where the expression used it itself.
+    pub via: Option<String>,
+}
+
+/// Adds `input` to `inputs` unless one of them names the same ([`Input::what`]).
+pub(crate) fn keep_once(inputs: &mut Vec<Input>, input: Input) {
+    if !inputs.iter().any(|i| i.what == input.what) {
+        inputs.push(input);
+    }
 }
 
 /// A [`Context`] that reads as `context` does and keeps what the reading used: each name it
-/// looked up, what that name was itself computed from where it is told ([`Recording::through`]),
+/// looked up (as shown where it is told, [`Recording::showing`]), what that name was itself computed from where it is told ([`Recording::through`]),
 /// and each declared bracket of `space` that a bracket it took pairs (`{a, b}` where one side
 /// involves `a` and the other `b`).
 pub struct Recording<'a, X> {
@@ -28,11 +38,16 @@ pub struct Recording<'a, X> {
     space: &'a PhaseSpace,
     /// What a name's value was computed from (`F` for `G = x F`), kept beside the name.
     through: Option<ComputedFrom<'a>>,
+    /// How a name is shown (`K_{1,2}` for `K_1_2`) where it is told ([`Recording::showing`]).
+    shown: Option<Shown<'a>>,
     inputs: RefCell<Vec<Input>>,
 }
 
 /// What a name's value was computed from, asked by its name ([`Recording::through`]).
 type ComputedFrom<'a> = Box<dyn Fn(&str) -> Vec<Input> + 'a>;
+
+/// How a name is shown, asked by its name ([`Recording::showing`]).
+type Shown<'a> = Box<dyn Fn(&str) -> String + 'a>;
 
 impl<X> std::fmt::Debug for Recording<'_, X> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -49,6 +64,7 @@ impl<'a, X: Context<GaussianRational>> Recording<'a, X> {
             context,
             space,
             through: None,
+            shown: None,
             inputs: RefCell::new(Vec::new()),
         }
     }
@@ -62,16 +78,21 @@ impl<'a, X: Context<GaussianRational>> Recording<'a, X> {
         self
     }
 
+    /// The same recording, naming each name looked up as `shown` shows it (a family instance
+    /// `K_1_2` as `K_{1,2}`), not as it was written.
+    #[must_use]
+    pub fn showing(mut self, shown: impl Fn(&str) -> String + 'a) -> Self {
+        self.shown = Some(Box::new(shown));
+        self
+    }
+
     /// What the readings so far used, each once, in the order first used.
     pub fn into_inputs(self) -> Vec<Input> {
         self.inputs.into_inner()
     }
 
     fn keep(&self, input: Input) {
-        let mut inputs = self.inputs.borrow_mut();
-        if !inputs.iter().any(|i| i.what == input.what) {
-            inputs.push(input);
-        }
+        keep_once(&mut self.inputs.borrow_mut(), input);
     }
 
     /// Whether `f` involves the phase variable `v`: holds it, or a denominator atom or a
@@ -88,16 +109,26 @@ impl<'a, X: Context<GaussianRational>> Recording<'a, X> {
 impl<X: Context<GaussianRational>> Context<GaussianRational> for Recording<'_, X> {
     fn lookup(&self, name: &str) -> Option<Expr> {
         let value = self.context.lookup(name)?;
+        let shown = match &self.shown {
+            Some(shown) => shown(name),
+            None => name.to_string(),
+        };
         let what = match name {
             "H" => "H".to_string(),
-            _ => format!("the function {name}"),
+            _ => format!("the function {shown}"),
         };
         self.keep(Input {
             what,
             value: value.clone(),
+            via: None,
         });
         if let Some(through) = &self.through {
-            through(name).into_iter().for_each(|i| self.keep(i));
+            // What `name` was computed from, however deep, is named as computed for `name`.
+            let via = |i: Input| Input {
+                via: Some(shown.clone()),
+                ..i
+            };
+            through(name).into_iter().for_each(|i| self.keep(via(i)));
         }
         Some(value)
     }
@@ -116,6 +147,7 @@ impl<X: Context<GaussianRational>> Context<GaussianRational> for Recording<'_, X
                 self.keep(Input {
                     what,
                     value: d.value.clone(),
+                    via: None,
                 });
             }
         }
