@@ -302,10 +302,28 @@ fn claim_rows(c: &ClaimResult, names: &Names, column: usize) -> Vec<String> {
     }
     // On a level set: the quotient that proves it, or what the residual is.
     match c.on_level.as_ref().map(|l| (l, l.proof(Style::Latex))) {
-        Some((l, Some((product, q)))) => rows.push(format!(
-            r"&{} = {product}, \quad Q = {q}",
-            math(&l.difference)
-        )),
+        // One row where it fits right of the alignment column; else the quotient on a row of its own, and the difference on
+        // one too where the product does not fit beside it (the Goryachev–Chaplygin cubic's
+        // `{M3 (M1² + M2²) + c M1 γ3, H} = Q (…), Q = −c M2` of the heavy top ran 99 pt past
+        // the margin).
+        Some((l, Some((product, q)))) => {
+            let difference = math(&l.difference);
+            let equation = format!("{difference} = {product}");
+            let quotient = format!(r"Q = {q}");
+            // The rows start at the alignment column, the widest left side of the claims.
+            let room = ROW.saturating_sub(column).max(ROW / 2);
+            if visual_width(&equation) + visual_width(&quotient) <= room {
+                rows.push(format!(r"&{equation}, \quad {quotient}"));
+            } else {
+                if visual_width(&equation) <= room {
+                    rows.push(format!("&{equation},"));
+                } else {
+                    rows.push(format!("&{difference}"));
+                    rows.push(format!(r"&\quad = {product},"));
+                }
+                rows.push(format!(r"&\quad {quotient}"));
+            }
+        }
         Some((l, None)) if c.residual.is_some() => rows.push(format!(
             r"&\quad\text{{(the remainder on division by }} P = {}\text{{: not a multiple of }} P\text{{)}}",
             l.polynomial.render(Style::Latex)
