@@ -474,10 +474,7 @@ fn claim_inputs(file: &LoadedSystem, source: &Source, form: &ClaimForm) -> (Vec<
     // A failure is the check's to report.
     let values = texts
         .into_iter()
-        .filter_map(|text| {
-            let tree = scope.tree(source, text).ok()?;
-            scope.lower_with(source, text, &tree, &recording).ok()
-        })
+        .filter_map(|text| scope.parse_into(source, text, &recording).ok())
         .collect();
     (values, recording.into_inputs())
 }
@@ -1062,10 +1059,7 @@ impl LoadedSystem {
                 let recording = scope.recording();
                 let mut exprs: Vec<Expr> = functions
                     .iter()
-                    .map(|(_, t)| {
-                        let tree = scope.tree(&spec.source, t)?;
-                        scope.lower_with(&spec.source, t, &tree, &recording)
-                    })
+                    .map(|(_, t)| scope.parse_into(&spec.source, t, &recording))
                     .collect::<Result<_, _>>()?;
                 // The functions restricted to the condition's level set (a condition on
                 // parameters alone sets their values), where what they are computed from has

@@ -781,10 +781,21 @@ impl<'a> Scope<'a> {
         source: &Source,
         text: &Text,
     ) -> Result<(Expr, Vec<Input>), FileError> {
-        let tree = self.tree(source, text)?;
         let recording = self.recording();
-        let value = self.lower_with(source, text, &tree, &recording)?;
+        let value = self.parse_into(source, text, &recording)?;
         Ok((value, recording.into_inputs()))
+    }
+
+    /// Parses a text of `source` into a polynomial, adding what it is computed from to
+    /// `recording` (several texts into one, as a claim's sides).
+    pub(crate) fn parse_into(
+        &self,
+        source: &Source,
+        text: &Text,
+        recording: &Recording<'_, Self>,
+    ) -> Result<Expr, FileError> {
+        let tree = self.tree(source, text)?;
+        self.lower_with(source, text, &tree, recording)
     }
 
     /// Parses a text into a tree (family instances written `K_{2,3}` are accepted).
