@@ -509,12 +509,6 @@ impl Condition {
     /// claim`). The refusal is an [`EngineError::RefusedCondition`] naming that variable, so
     /// that a caller holding the condition's text shows it at the variable's value there.
     pub fn defined_on(&self, sides: &[&Expr], what: &str) -> Result<(), EngineError> {
-        self.defined_saying(sides, what)
-    }
-
-    /// [`Condition::defined_on`], its message saying `who` divides by the variable (`the
-    /// function F`, or `the claim's G is computed from the function F, which`).
-    fn defined_saying(&self, sides: &[&Expr], who: &str) -> Result<(), EngineError> {
         for side in sides {
             self.within(side.vars())?;
         }
@@ -527,7 +521,7 @@ impl Condition {
                 Err(refused(
                     v,
                     format!(
-                        "the condition sets {name} = 0, but {who} divides by {name}: give \
+                        "the condition sets {name} = 0, but {what} divides by {name}: give \
                          {name} a value other than 0, or leave it free"
                     ),
                 ))
@@ -543,7 +537,7 @@ impl Condition {
     /// at `I3 = 0`, where `H` divides by `I3`).
     pub fn defined_on_inputs(&self, inputs: &[Input]) -> Result<(), EngineError> {
         inputs.iter().try_for_each(|i| match &i.via {
-            Some(via) => self.defined_saying(
+            Some(via) => self.defined_on(
                 &[&i.value],
                 &format!("the claim's {via} is computed from {}, which", i.what),
             ),
