@@ -40,6 +40,7 @@ mod system;
 pub mod systems;
 pub mod table;
 pub mod tower;
+pub mod univariate;
 
 pub use claim::{Claim, Condition, LeftByFlow, Outcome, Verdict};
 pub use closure::{

@@ -93,6 +93,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod exceptional;
 mod independence;
 mod level_set;
 mod locate;
@@ -105,6 +106,7 @@ mod result;
 #[cfg(test)]
 mod tests;
 
+pub use exceptional::{exceptional_values, ExceptionalValue, ExceptionalValues, MAX_MINOR};
 pub use level_set::{BesideLevelSet, LevelProof, LevelReduction, LevelSet};
 pub use options::{SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
 pub(crate) use parameters::{check_parameters, off_vanishing_denominators};

@@ -1,0 +1,723 @@
+//! The exceptional values of a parameter: the values `t0` of one parameter `t` at which the
+//! space holds more integrals than at a generic value (Hietarinta's "direct method", done
+//! exactly), each confirmed by the ordinary search at `t0`.
+//!
+//! With `t` kept as a variable and the other parameters fixed, the equations `{Σ c_j φ_j, H} = 0`
+//! are `M(t) c = 0`, the entries of `M` polynomials in `t`. Let `r` be its generic rank: the
+//! values where the kernel is larger are those where every `r×r` minor vanishes. `M` splits into
+//! blocks (unknowns sharing no equation); in each, the rank and an `r×r` submatrix `S`
+//! nonsingular at a random point are found modulo a prime, and `det S(t)` is computed exactly:
+//! modulo primes whose product passes a bound on its coefficients (the product of the rows'
+//! sums of coefficients), each time from its values at `deg + 1` points, then by the Chinese
+//! remainder theorem. Every exceptional value is a root of `det S` of some block. Its rational
+//! roots are found exactly ([`IntPoly::rational_roots`]), and each is kept only if the ordinary
+//! search at that value finds more integrals than at a generic value (one that is no root);
+//! the irrational and complex roots are not examined, and the factor holding them is reported
+//! ([`ExceptionalValues::unexamined`]).
+//!
+//! The generic rank is the rank at a random point modulo a prime (a larger one would need that
+//! point to be a root modulo the prime of every nonzero minor of that size, a chance below
+//! `deg/p < 2⁻⁵⁰`); everything else is exact.
+//!
+//! ```
+//! use brackets::search::{exceptional_values, SearchOptions, SearchSpace};
+//! use brackets::{PhaseSpace, System};
+//! use trigpoly::{Expr, Vars};
+//!
+//! // p²/2 + (x² + a y²)/2: at a = 1 the oscillator is isotropic, and x p_y − y p_x is an
+//! // integral there alone; at a = 0, y is free and p_y is one.
+//! let vars = Vars::builder()
+//!     .coordinate("x").coordinate("y").momentum("p_x").momentum("p_y").parameter("a")
+//!     .build()?;
+//! let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")])?;
+//! let h = Expr::parse(&vars, "(p_x^2 + p_y^2)/2 + (x^2 + a*y^2)/2")?;
+//! let oscillator = System::new("oscillator", space, h)?;
+//! let options = SearchOptions::new(SearchSpace::default().momenta_degree(2).positions_degree(2));
+//! let found = exceptional_values(&oscillator, &options, vars.lookup("a").unwrap())?;
+//! // 1 and the two energies, for every a.
+//! assert_eq!(found.generic.basis.len(), 3);
+//! let values: Vec<String> = found.values.iter().map(|v| v.value.to_string()).collect();
+//! assert_eq!(values, ["0", "1"]);
+//! let at_one = &found.values[1].found;
+//! assert!(at_one.basis.iter().any(|i| i.expr().to_string() == "x p_y − y p_x"));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use std::collections::BTreeMap;
+
+use num_bigint::BigInt;
+use num_traits::{One, Signed, Zero};
+use rustc_hash::FxHashMap;
+use trigpoly::{Expr, Rational, Var, VarKind};
+
+use crate::error::EngineError;
+use crate::system::System;
+use crate::univariate::IntPoly;
+
+use super::problem::{canonical, Components};
+use super::{fixed_search_problem, search, FixedSearch, SearchOptions, SearchResult};
+
+/// The largest block whose determinant is computed: past it the search stops with a message
+/// (a determinant of this size takes some seconds per prime).
+pub const MAX_MINOR: usize = 400;
+
+/// What [`exceptional_values`] found.
+#[derive(Debug)]
+pub struct ExceptionalValues {
+    /// The parameter solved for.
+    pub parameter: Var,
+    /// The ordinary search at a generic value, no root of any block's determinant.
+    pub generic: SearchResult,
+    /// The rational values where the space holds more integrals, increasing, each with the
+    /// ordinary search there.
+    pub values: Vec<ExceptionalValue>,
+    /// The rational roots of the determinants where the search found no more integrals.
+    pub spurious: Vec<Rational>,
+    /// The product of the determinants' square-free parts with their rational linear factors
+    /// divided out, as a polynomial in the parameter, when it is not constant: its roots, not
+    /// rational, were not examined.
+    pub unexamined: Option<Expr>,
+    /// The same polynomial, a constant when none is left.
+    pub unexamined_factor: IntPoly,
+    /// The largest block's minor: its size and the degree of its determinant.
+    pub largest_minor: (usize, usize),
+}
+
+/// One exceptional value and the ordinary search there.
+#[derive(Debug)]
+pub struct ExceptionalValue {
+    /// The value.
+    pub value: Rational,
+    /// The search at it: more integrals than [`ExceptionalValues::generic`].
+    pub found: SearchResult,
+}
+
+/// The values of `parameter` at which the space of `options` holds more integrals than at a
+/// generic value, the other parameters at `options`' fixed values (1 by default). Refused:
+/// a parameter that is not one of `H`'s, or is fixed, kept symbolic or set by the condition;
+/// parameters kept symbolic; a level set; a parameter in a declared denominator or radical;
+/// a block past [`MAX_MINOR`].
+pub fn exceptional_values(
+    system: &System,
+    options: &SearchOptions,
+    parameter: Var,
+) -> Result<ExceptionalValues, EngineError> {
+    refuse(system, options, parameter)?;
+    let kept = SearchOptions {
+        symbolic: vec![parameter],
+        space: options.space.parameters_degree(0),
+        new_only: false,
+        ..options.clone()
+    };
+    let FixedSearch { problem, .. } = fixed_search_problem(system, &kept)?;
+    let images = (0..problem.unknowns.len())
+        .map(|j| problem.image(&problem.expr(j, &Rational::one())?))
+        .collect::<Result<Vec<Expr>, EngineError>>()?;
+    let images = match crate::clearing::Clearing::new(
+        system.space().denominator_atoms(),
+        system.space().radicals(),
+        &problem.parameters,
+        images.iter(),
+    )? {
+        Some(clearing) => clearing.apply_all(&images)?,
+        None => images,
+    };
+    let matrix = PolyMatrix::new(&images, parameter, &problem.variables.angles);
+    let mut determinants = Vec::new();
+    let mut largest_minor = (0, 0);
+    for block in matrix.blocks() {
+        let minor = matrix.generic_minor(&block);
+        if minor.len() > MAX_MINOR {
+            return Err(EngineError::Invalid(format!(
+                "a block of the equations has rank {} past {MAX_MINOR}, the largest whose \
+                 determinant in the parameter is computed: take a smaller space",
+                minor.len()
+            )));
+        }
+        let det = determinant(&minor);
+        largest_minor = largest_minor.max((minor.len(), det.degree().unwrap_or(0)));
+        determinants.push(det);
+    }
+    let mut roots: Vec<Rational> = Vec::new();
+    let mut rest = IntPoly::from_i64(&[1]);
+    for det in &determinants {
+        let (found, left) = det.rational_roots()?;
+        roots.extend(found);
+        rest = rest.mul(&left);
+    }
+    roots.sort();
+    roots.dedup();
+    let rest = rest.square_free();
+    let generic_value = (1..)
+        .map(|k| Rational::new(2 * k + 5, 1))
+        .find(|v| determinants.iter().all(|d| !d.vanishes_at(v)))
+        .expect("a polynomial has finitely many roots");
+    let at = |value: &Rational| {
+        let mut options = options.clone();
+        options.fixed.push((parameter, value.clone()));
+        search(system, &options)
+    };
+    let generic = at(&generic_value)?;
+    let mut values = Vec::new();
+    let mut spurious = Vec::new();
+    for value in roots {
+        let found = at(&value)?;
+        if found.basis.len() > generic.basis.len() {
+            values.push(ExceptionalValue { value, found });
+        } else {
+            spurious.push(value);
+        }
+    }
+    let unexamined = (rest.degree().unwrap_or(0) > 0)
+        .then(|| polynomial_in(system, parameter, &rest))
+        .transpose()?;
+    Ok(ExceptionalValues {
+        parameter,
+        generic,
+        values,
+        spurious,
+        unexamined,
+        unexamined_factor: rest,
+        largest_minor,
+    })
+}
+
+/// Refuses what [`exceptional_values`] does not take.
+fn refuse(system: &System, options: &SearchOptions, parameter: Var) -> Result<(), EngineError> {
+    let vars = system.vars();
+    if !vars.owns(parameter) || vars.variable(parameter).kind() != VarKind::Parameter {
+        return Err(EngineError::Invalid(
+            "only a parameter's exceptional values are found".into(),
+        ));
+    }
+    let name = vars.variable(parameter).name();
+    let refusal = if !system.hamiltonian().contains(parameter) {
+        Some(format!("H does not hold {name}"))
+    } else if !options.symbolic.is_empty() {
+        Some("parameters kept symbolic: the others are fixed".into())
+    } else if options.on.is_some() {
+        Some("a level set".into())
+    } else if options.fixed.iter().any(|f| f.0 == parameter) {
+        Some(format!(
+            "a value fixed for {name}, the parameter solved for"
+        ))
+    } else if options
+        .condition
+        .as_ref()
+        .is_some_and(|c| c.subs().iter().any(|s| s.0 == parameter))
+    {
+        Some(format!(
+            "a condition that sets {name}, the parameter solved for"
+        ))
+    } else if system
+        .space()
+        .denominator_atoms()
+        .iter()
+        .chain(system.space().radicals())
+        .any(|(_, e)| e.contains(parameter))
+    {
+        Some(format!(
+            "{name} in a declared denominator or radical, whose clearing depends on it"
+        ))
+    } else {
+        None
+    };
+    match refusal {
+        Some(what) => Err(EngineError::Invalid(format!(
+            "the search for the exceptional values of {name} does not take {what}"
+        ))),
+        None => Ok(()),
+    }
+}
+
+/// `Σ a_i t^i` as an expression in the parameter `t`.
+fn polynomial_in(system: &System, t: Var, p: &IntPoly) -> Result<Expr, EngineError> {
+    let vars = system.vars();
+    let mut out = Expr::zero(vars);
+    let mut power = Expr::constant(vars, 1.into());
+    let var = Expr::var(vars, t);
+    for c in p.coeffs() {
+        out = &out + &(&power * &Rational::from(c.clone()));
+        power = &power * &var;
+    }
+    Ok(out)
+}
+
+/// The equations with the parameter `t` kept: each column an unknown, each entry the
+/// polynomial in `t`, integer coefficients, each row scaled by the lcm of its denominators.
+struct PolyMatrix {
+    /// By column, the rows and entries (coefficients lowest degree first).
+    columns: Vec<Vec<(usize, Vec<BigInt>)>>,
+    rows: usize,
+}
+
+impl PolyMatrix {
+    /// The equations of the `images`: a row for the real and the imaginary part of each
+    /// monomial other than `t`'s with a canonical `e^{ik·θ}`.
+    fn new(images: &[Expr], t: Var, angles: &[Var]) -> Self {
+        let mut row_of: FxHashMap<(Vec<i64>, usize), usize> = FxHashMap::default();
+        let mut entries: Vec<BTreeMap<usize, BTreeMap<usize, Rational>>> = Vec::new();
+        for image in images {
+            let mut column: BTreeMap<usize, BTreeMap<usize, Rational>> = BTreeMap::new();
+            for term in image.terms() {
+                if !canonical(angles.iter().map(|v| term.exponent(*v))) {
+                    continue;
+                }
+                let power = usize::try_from(term.exponent(t)).expect("t is a polynomial's");
+                let mut key = term.exponents();
+                key[t.index()] = 0;
+                let c = term.coeff();
+                for (part, x) in [c.re, c.im].into_iter().enumerate() {
+                    if x.is_zero() {
+                        continue;
+                    }
+                    let n = row_of.len();
+                    let row = *row_of.entry((key.clone(), part)).or_insert(n);
+                    *column.entry(row).or_default().entry(power).or_default() += &x;
+                }
+            }
+            entries.push(column);
+        }
+        let rows = row_of.len();
+        // Each row's entries made integers: times the lcm of the row's denominators.
+        let mut lcm = vec![BigInt::one(); rows];
+        for column in &entries {
+            for (row, poly) in column {
+                for x in poly.values() {
+                    lcm[*row] = num_integer::Integer::lcm(&lcm[*row], &x.denom().to_bigint());
+                }
+            }
+        }
+        let columns = entries
+            .into_iter()
+            .map(|column| {
+                column
+                    .into_iter()
+                    .filter_map(|(row, poly)| {
+                        let degree = poly.keys().max().copied().unwrap_or(0);
+                        let mut coeffs = vec![BigInt::zero(); degree + 1];
+                        for (i, x) in poly {
+                            let scaled = x * &Rational::from(lcm[row].clone());
+                            coeffs[i] = scaled.numer().to_bigint();
+                        }
+                        let p = IntPoly::new(coeffs);
+                        (!p.is_zero()).then(|| (row, p.coeffs().to_vec()))
+                    })
+                    .collect()
+            })
+            .collect();
+        PolyMatrix { columns, rows }
+    }
+
+    /// The unknowns by block: those that share an equation, transitively.
+    fn blocks(&self) -> Vec<Vec<usize>> {
+        let n = self.columns.len();
+        let mut uf = Components((0..n).collect());
+        let mut first: Vec<Option<usize>> = vec![None; self.rows];
+        for (j, column) in self.columns.iter().enumerate() {
+            for (row, _) in column {
+                match first[*row] {
+                    Some(f) => uf.union(f, j),
+                    None => first[*row] = Some(j),
+                }
+            }
+        }
+        let mut groups: BTreeMap<usize, Vec<usize>> = BTreeMap::new();
+        for j in 0..n {
+            let root = uf.find(j);
+            groups.entry(root).or_default().push(j);
+        }
+        groups.into_values().collect()
+    }
+
+    /// A square submatrix of the block's columns of the block's generic rank, nonsingular at
+    /// a random point modulo a prime: its rows (dense, entries polynomials in `t`).
+    fn generic_minor(&self, block: &[usize]) -> Vec<Vec<Vec<BigInt>>> {
+        let p = PRIMES_BELOW;
+        let point = RANDOM_POINT % p;
+        let mut local: BTreeMap<usize, usize> = BTreeMap::new();
+        for &j in block {
+            for (row, _) in &self.columns[j] {
+                let n = local.len();
+                local.entry(*row).or_insert(n);
+            }
+        }
+        let rows: Vec<usize> = local.keys().copied().collect();
+        let mut dense = vec![vec![0_u64; block.len()]; rows.len()];
+        for (k, &j) in block.iter().enumerate() {
+            for (row, poly) in &self.columns[j] {
+                dense[local[row]][k] = evaluate_mod(poly, point, p);
+            }
+        }
+        // Elimination modulo p, remembering the original row of each pivot.
+        let mut order: Vec<usize> = (0..rows.len()).collect();
+        let (mut pivot_rows, mut pivot_columns) = (Vec::new(), Vec::new());
+        let mut next = 0;
+        for col in 0..block.len() {
+            let Some(found) = (next..order.len()).find(|&i| dense[order[i]][col] != 0) else {
+                continue;
+            };
+            order.swap(next, found);
+            let pivot = order[next];
+            let inverse = inverse_mod(dense[pivot][col], p);
+            let pivot_row = dense[pivot].clone();
+            for &other in &order[next + 1..] {
+                clear_entry(&mut dense[other], &pivot_row, col, inverse, p);
+            }
+            pivot_rows.push(rows[pivot]);
+            pivot_columns.push(block[col]);
+            next += 1;
+        }
+        let position: FxHashMap<usize, usize> = pivot_rows
+            .iter()
+            .enumerate()
+            .map(|(i, &r)| (r, i))
+            .collect();
+        let mut minor = vec![vec![Vec::new(); pivot_columns.len()]; pivot_rows.len()];
+        for (k, &j) in pivot_columns.iter().enumerate() {
+            for (row, poly) in &self.columns[j] {
+                if let Some(&i) = position.get(row) {
+                    minor[i][k] = poly.clone();
+                }
+            }
+        }
+        minor
+    }
+}
+
+/// A fixed point in `F_p` standing for a random one (the golden ratio's 64 bits).
+const RANDOM_POINT: u64 = 0x9E37_79B9_7F4A_7C15;
+
+/// The largest prime below 2⁶²; the others are found below it.
+const PRIMES_BELOW: u64 = (1 << 62) - 57;
+
+/// The determinant of the square matrix of polynomials, exactly: modulo primes whose product
+/// passes twice the bound `Π_i Σ_j ‖S_ij‖₁` on its coefficients, each from its values at
+/// `deg + 1` points, then by the Chinese remainder theorem.
+fn determinant(minor: &[Vec<Vec<BigInt>>]) -> IntPoly {
+    let r = minor.len();
+    if r == 0 {
+        return IntPoly::from_i64(&[1]);
+    }
+    let degree: usize = minor
+        .iter()
+        .map(|row| {
+            row.iter()
+                .map(|e| e.len().saturating_sub(1))
+                .max()
+                .unwrap_or(0)
+        })
+        .sum();
+    let bound: BigInt = minor
+        .iter()
+        .map(|row| {
+            row.iter()
+                .flatten()
+                .map(BigInt::abs)
+                .fold(BigInt::zero(), |a, b| a + b)
+        })
+        .product();
+    let needed = BigInt::from(2) * bound;
+    let mut modulus = BigInt::one();
+    let mut coeffs = vec![BigInt::zero(); degree + 1];
+    let mut p = PRIMES_BELOW;
+    while modulus <= needed {
+        let values: Vec<u64> = (0..=degree as u64)
+            .map(|u| determinant_mod(minor, u, p))
+            .collect();
+        let residues = interpolate_mod(&values, p);
+        // x ≡ coeffs mod modulus, x ≡ residue mod p.
+        let m_mod_p = big_mod(&modulus, p);
+        let inverse = inverse_mod(m_mod_p, p);
+        for (c, &residue) in coeffs.iter_mut().zip(&residues) {
+            let difference = (residue + p - big_mod(c, p)) % p;
+            let k = mul_mod(difference, inverse, p);
+            *c += &modulus * BigInt::from(k);
+        }
+        modulus *= BigInt::from(p);
+        p = previous_prime(p);
+    }
+    let half = &modulus / 2;
+    for c in &mut coeffs {
+        if *c > half {
+            *c -= &modulus;
+        }
+    }
+    IntPoly::new(coeffs)
+}
+
+/// The determinant of the matrix at `t = u`, modulo `p`.
+fn determinant_mod(minor: &[Vec<Vec<BigInt>>], u: u64, p: u64) -> u64 {
+    let r = minor.len();
+    let mut a: Vec<Vec<u64>> = minor
+        .iter()
+        .map(|row| row.iter().map(|e| evaluate_mod(e, u, p)).collect())
+        .collect();
+    let mut det = 1_u64;
+    for col in 0..r {
+        let Some(found) = (col..r).find(|&i| a[i][col] != 0) else {
+            return 0;
+        };
+        if found != col {
+            a.swap(found, col);
+            det = (p - det) % p;
+        }
+        det = mul_mod(det, a[col][col], p);
+        let inverse = inverse_mod(a[col][col], p);
+        let (above, below) = a.split_at_mut(col + 1);
+        for row in below {
+            clear_entry(row, &above[col], col, inverse, p);
+        }
+    }
+    det
+}
+
+/// The coefficients, lowest degree first, of the polynomial of degree `< n` taking the
+/// `values` at `0, 1, …, n − 1`, modulo `p` (Newton's divided differences).
+fn interpolate_mod(values: &[u64], p: u64) -> Vec<u64> {
+    let n = values.len();
+    let mut d = values.to_vec();
+    for k in 1..n {
+        let inverse = inverse_mod(k as u64 % p, p);
+        for i in (k..n).rev() {
+            d[i] = mul_mod((d[i] + p - d[i - 1]) % p, inverse, p);
+        }
+    }
+    // Σ d_k Π_{i<k} (t − i), expanded from the innermost.
+    let mut coeffs = vec![0_u64; n];
+    for k in (0..n).rev() {
+        // coeffs = coeffs·(t − k) + d_k
+        let mut shifted = vec![0_u64; n];
+        for i in 0..n {
+            if coeffs[i] == 0 {
+                continue;
+            }
+            if i + 1 < n {
+                shifted[i + 1] = (shifted[i + 1] + coeffs[i]) % p;
+            }
+            let sub = mul_mod(coeffs[i], k as u64 % p, p);
+            shifted[i] = (shifted[i] + p - sub) % p;
+        }
+        shifted[0] = (shifted[0] + d[k]) % p;
+        coeffs = shifted;
+    }
+    coeffs
+}
+
+/// Subtracts from `row` the multiple of `pivot` that makes its entry at `col` zero
+/// (`inverse` the inverse of the pivot's there), modulo `p`.
+fn clear_entry(row: &mut [u64], pivot: &[u64], col: usize, inverse: u64, p: u64) {
+    let factor = mul_mod(row[col], inverse, p);
+    if factor == 0 {
+        return;
+    }
+    for (x, y) in row[col..].iter_mut().zip(&pivot[col..]) {
+        *x = (*x + p - mul_mod(factor, *y, p)) % p;
+    }
+}
+
+/// `poly(u)` modulo `p`.
+fn evaluate_mod(poly: &[BigInt], u: u64, p: u64) -> u64 {
+    poly.iter()
+        .rev()
+        .fold(0, |acc, c| (mul_mod(acc, u, p) + big_mod(c, p)) % p)
+}
+
+/// `a` modulo `p`, in `0..p`.
+fn big_mod(a: &BigInt, p: u64) -> u64 {
+    let r = a % BigInt::from(p);
+    let r = if r.is_negative() {
+        r + BigInt::from(p)
+    } else {
+        r
+    };
+    u64::try_from(r).expect("below p")
+}
+
+/// `a·b` modulo `p`.
+fn mul_mod(a: u64, b: u64, p: u64) -> u64 {
+    ((u128::from(a) * u128::from(b)) % u128::from(p)) as u64
+}
+
+/// `a^e` modulo `p`, by repeated squaring.
+fn pow_mod(mut a: u64, mut e: u64, p: u64) -> u64 {
+    let mut acc = 1;
+    while e > 0 {
+        if e & 1 == 1 {
+            acc = mul_mod(acc, a, p);
+        }
+        a = mul_mod(a, a, p);
+        e >>= 1;
+    }
+    acc
+}
+
+/// `1/a` modulo the prime `p` (Fermat).
+fn inverse_mod(a: u64, p: u64) -> u64 {
+    pow_mod(a, p - 2, p)
+}
+
+/// The largest prime below `n` (Miller–Rabin with the bases that decide every 64-bit number).
+fn previous_prime(n: u64) -> u64 {
+    (3..=n - 2)
+        .rev()
+        .step_by(2)
+        .find(|&m| is_prime(m))
+        .expect("a prime below n")
+}
+
+/// Whether `n` is prime.
+fn is_prime(n: u64) -> bool {
+    const BASES: [u64; 12] = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37];
+    if n < 2 {
+        return false;
+    }
+    if let Some(&b) = BASES.iter().find(|&&b| n.is_multiple_of(b)) {
+        return n == b;
+    }
+    let (mut d, mut s) = (n - 1, 0);
+    while d % 2 == 0 {
+        d /= 2;
+        s += 1;
+    }
+    BASES.iter().all(|&a| {
+        let mut x = pow_mod(a, d, n);
+        if x == 1 || x == n - 1 {
+            return true;
+        }
+        for _ in 1..s {
+            x = mul_mod(x, x, n);
+            if x == n - 1 {
+                return true;
+            }
+        }
+        false
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::search::SearchSpace;
+    use crate::PhaseSpace;
+    use trigpoly::Vars;
+
+    /// The system of the Hamiltonian `h` in `x, y, p_x, p_y` and the `parameters`.
+    fn planar(h: &str, parameters: &[&str]) -> System {
+        let mut builder = Vars::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .momentum("p_x")
+            .momentum("p_y");
+        for p in parameters {
+            builder = builder.parameter(p);
+        }
+        let vars = builder.build().unwrap();
+        let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")]).unwrap();
+        System::new("test", space, Expr::parse(&vars, h).unwrap()).unwrap()
+    }
+
+    fn values_of(found: &ExceptionalValues) -> Vec<String> {
+        found.values.iter().map(|v| v.value.to_string()).collect()
+    }
+
+    fn space(momenta: u32, positions: u32) -> SearchOptions {
+        SearchOptions::new(
+            SearchSpace::default()
+                .momenta_degree(momenta)
+                .positions_degree(positions),
+        )
+    }
+
+    #[test]
+    fn oscillators_with_frequency_squares_a_squared_and_one_are_exceptional_at_a_equal_to_plus_or_minus_one(
+    ) {
+        // (x² + a² y²)/2: isotropic, with the angular momentum, at a = ±1 alone (a = 0 frees y
+        // and gives p_y too).
+        let system = planar("(p_x^2 + p_y^2)/2 + (x^2 + a^2*y^2)/2", &["a"]);
+        let a = system.var("a");
+        let found = exceptional_values(&system, &space(2, 2), a).unwrap();
+        assert_eq!(values_of(&found), ["-1", "0", "1"]);
+        for v in &found.values {
+            assert!(v.found.basis.len() > found.generic.basis.len());
+        }
+    }
+
+    #[test]
+    fn henon_heiles_at_a_equal_b_equal_one_has_its_second_quadratic_integral_at_c_one_third_and_two(
+    ) {
+        let system = planar(
+            "(p_x^2 + p_y^2)/2 + (A*x^2 + B*y^2)/2 + x^2*y + C*y^3",
+            &["A", "B", "C"],
+        );
+        // The KdV case's integral has x⁴: degree 4 in the positions.
+        let found = exceptional_values(&system, &space(2, 4), system.var("C")).unwrap();
+        assert_eq!(values_of(&found), ["1/3", "2"]);
+        // Generically 1 and H; one more integral at each value, proved.
+        assert_eq!(found.generic.basis.len(), 2);
+        for v in &found.values {
+            assert_eq!(v.found.basis.len(), 3);
+            assert!(v.found.basis.iter().all(|i| i.proved_fixed));
+        }
+    }
+
+    #[test]
+    fn a_shifted_one_to_two_oscillator_has_no_exceptional_value() {
+        // The energies of x and y are integrals for every a, and nothing else of degree 2.
+        let system = planar("(p_x^2 + p_y^2)/2 + (x^2 + 4*y^2)/2 + a*x", &["a"]);
+        let found = exceptional_values(&system, &space(2, 2), system.var("a")).unwrap();
+        assert!(found.values.is_empty(), "{:?}", values_of(&found));
+        assert_eq!(found.generic.basis.len(), 3);
+    }
+
+    #[test]
+    fn irrational_exceptional_values_are_reported_not_claimed() {
+        // Isotropic where a² − 1 = 1, at a = ±√2: no rational value, a² − 2 left unexamined.
+        let system = planar("(p_x^2 + p_y^2)/2 + (x^2 + (a^2 - 1)*y^2)/2", &["a"]);
+        let found = exceptional_values(&system, &space(2, 2), system.var("a")).unwrap();
+        assert!(found.unexamined.is_some());
+        assert!(IntPoly::from_i64(&[-2, 0, 1]).divides(&found.unexamined_factor));
+        assert_eq!(values_of(&found), ["-1", "1"]);
+    }
+
+    #[test]
+    fn what_the_search_for_exceptional_values_does_not_take_is_refused() {
+        let system = planar(
+            "(p_x^2 + p_y^2)/2 + (A*x^2 + B*y^2)/2 + x^2*y + C*y^3",
+            &["A", "B", "C"],
+        );
+        let c = system.var("C");
+        let fixed = space(2, 3).fix(c, Rational::from(2));
+        let refused = exceptional_values(&system, &fixed, c)
+            .unwrap_err()
+            .to_string();
+        assert!(refused.contains("a value fixed for C"), "{refused}");
+        let symbolic = space(2, 3).symbolic(system.var("A"));
+        let refused = exceptional_values(&system, &symbolic, c)
+            .unwrap_err()
+            .to_string();
+        assert!(refused.contains("kept symbolic"), "{refused}");
+        let refused = exceptional_values(&system, &space(2, 3), system.var("x"))
+            .unwrap_err()
+            .to_string();
+        assert!(refused.contains("only a parameter"), "{refused}");
+    }
+
+    #[test]
+    fn henon_heiles_with_b_sixteen_a_has_its_quartic_integral_at_c_sixteen_thirds() {
+        let system = planar(
+            "(p_x^2 + p_y^2)/2 + (A*x^2 + B*y^2)/2 + x^2*y + C*y^3",
+            &["A", "B", "C"],
+        );
+        let options = space(4, 6).fix(system.var("B"), Rational::from(16));
+        let found = exceptional_values(&system, &options, system.var("C")).unwrap();
+        // The KdV case's quadratic integral and its products with H, then the quartic one.
+        assert_eq!(values_of(&found), ["2", "16/3"]);
+        for v in &found.values {
+            assert!(v.found.basis.len() > found.generic.basis.len());
+            assert!(v.found.basis.iter().all(|i| i.proved_fixed));
+        }
+        // Roots of the determinants where the search found nothing more.
+        assert!(!found.spurious.is_empty());
+    }
+}
