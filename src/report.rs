@@ -193,6 +193,74 @@ pub enum Facts {
     Search(Box<SearchFacts>),
     /// Of `superint closure`.
     Closure(ClosureFacts),
+    /// Of `superint search --find-values`.
+    ExceptionalValues(ExceptionalFacts),
+}
+
+/// What `superint search --find-values` found: the values of one parameter where the space
+/// holds more integrals than at a generic value.
+#[derive(Clone, Debug)]
+#[non_exhaustive]
+pub struct ExceptionalFacts {
+    /// The parameter solved for, in the file's names.
+    pub parameter: String,
+    /// The generic value searched at (no root of any determinant), the dimension there and
+    /// the section of that search.
+    pub generic: ValueFacts,
+    /// The rational values with more integrals, increasing.
+    pub values: Vec<ValueFacts>,
+    /// The rational roots of the determinants where the search found no more integrals.
+    pub not_exceptional: Vec<String>,
+    /// The polynomial in the parameter whose roots, not rational, were not examined, in
+    /// ASCII; `None` when none is left.
+    pub unexamined: Option<String>,
+    /// The largest block's minor: its size and the degree of its determinant.
+    pub largest_minor: (usize, usize),
+}
+
+/// A value of the parameter searched at, the dimension of the space of integrals there and
+/// the report's section that shows that search.
+#[derive(Clone, Debug)]
+#[non_exhaustive]
+pub struct ValueFacts {
+    /// The value, as a fraction (`1/3`).
+    pub value: String,
+    /// The dimension of the space of integrals at it.
+    pub dimension: usize,
+    /// The section of the search at it.
+    pub section: u32,
+}
+
+impl ValueFacts {
+    /// The facts of a value.
+    pub fn new(value: String, dimension: usize, section: u32) -> Self {
+        ValueFacts {
+            value,
+            dimension,
+            section,
+        }
+    }
+}
+
+impl ExceptionalFacts {
+    /// The facts, as [`ExceptionalFacts`]' fields say.
+    pub fn new(
+        parameter: String,
+        generic: ValueFacts,
+        values: Vec<ValueFacts>,
+        not_exceptional: Vec<String>,
+        unexamined: Option<String>,
+        largest_minor: (usize, usize),
+    ) -> Self {
+        ExceptionalFacts {
+            parameter,
+            generic,
+            values,
+            not_exceptional,
+            unexamined,
+            largest_minor,
+        }
+    }
 }
 
 /// How the linear algebra of a search or closure treated the parameters.

@@ -10,8 +10,8 @@ use brackets::search::{BesideLevelSet, SearchOptions, SearchSpace, DEFAULT_MAX_P
 use brackets::{EngineError, System};
 use clap::Args;
 use superint::discovery::{
-    builtin_system, builtin_system_refused, command_line_search_report, parse_condition_checked,
-    parse_fixed, parse_known, parse_symbolic, ListRefusal,
+    builtin_system, builtin_system_refused, command_line_search_report, exceptional_values_report,
+    parse_condition_checked, parse_fixed, parse_known, parse_symbolic, ListRefusal,
 };
 use superint::render::{render, Format};
 use superint::report::{with_article, Report};
@@ -37,6 +37,8 @@ Examples:
   superint search --system anisotropic-3-5 --when 'p_theta = I*omega' --fix omega=1,M=2
   superint search systems/henon-heiles.toml --momenta-degree 2 --positions-degree 4 \\
       --trig-degree 0 --when 'C = 2' --symbolic A,B
+  superint search systems/henon-heiles.toml --find-values C --fix A=1,B=1 \\
+      --momenta-degree 2 --positions-degree 4 --trig-degree 0
   superint search systems/kovalevskaya-top.toml --poisson-degree 4
   superint search systems/euler-top.toml --poisson-degree 2 --fix I1=1,I2=2,I3=3
 
@@ -45,6 +47,8 @@ otherwise, and the output says which); every basis element is then lifted back t
 symbolic parameters by homogeneity and proved symbolically where the system allows.
 Parameters named by --symbolic are never fixed: the unknowns are polynomials in them, and
 the output lists the integrals that generate all the others over those polynomials.
+--find-values C finds the values of C at which the space holds more integrals than for a
+generic C (Hietarinta's direct method, done exactly).
 Built-in systems (--system): harmonic, gravity, anisotropic-3-5, anisotropic-1-2,
 planar-i, planar-ii.";
 
@@ -120,6 +124,15 @@ pub struct SearchArgs {
     /// denominator zero).
     #[arg(long, value_name = "VALUES")]
     fix: Option<String>,
+    /// Find the values of one parameter, such as C, at which the space holds more integrals
+    /// than at a generic value: the rank of the equations, with the parameter kept, drops
+    /// there, at a root of a determinant computed exactly. Each rational root is searched at
+    /// and shown as --when 'C = VALUE' shows it, those with more integrals told apart; the
+    /// polynomial whose irrational roots were not examined is printed. The other parameters
+    /// are fixed (--fix, 1 by default). Not with --symbolic, --on, --new-only or a --when that
+    /// sets the parameter.
+    #[arg(long, value_name = "PARAM", conflicts_with_all = ["symbolic", "on", "new_only"])]
+    find_values: Option<String>,
     /// Parameters kept symbolic, such as A,B: the coefficients of the integrals are then
     /// polynomials in them (of total degree at most --parameters-degree), and what is found
     /// holds for every value of them.
@@ -744,6 +757,9 @@ fn search(a: &SearchArgs, subject: &Subject, format: Format) -> anyhow::Result<R
         refuse_beside_level_set(subject.system(), &options)?;
         options.on = Some(level_set(subject, on, &options.fixed)?);
     }
+    if let Some(names) = &a.find_values {
+        return find_values(a, subject, format, &options, names);
+    }
     options.new_only = a.new_only;
     options.exact_complement = a.exact_complement;
     options.max_products = usize::try_from(a.max_products).unwrap_or(usize::MAX);
@@ -793,6 +809,68 @@ fn search(a: &SearchArgs, subject: &Subject, format: Format) -> anyhow::Result<R
             e,
         ),
     })?;
+    Ok(subject.tag(report))
+}
+
+/// The values of the parameter `names` (one) with more integrals, the search at a generic
+/// value and at each of them as `--when` shows it (with `a`'s own `--when` after), as a
+/// report to print in `format`.
+fn find_values(
+    a: &SearchArgs,
+    subject: &Subject,
+    format: Format,
+    options: &SearchOptions,
+    names: &str,
+) -> anyhow::Result<Report> {
+    let start = std::time::Instant::now();
+    let parameters = parse_symbolic(subject.system(), names)
+        .map_err(|e| list_refused("--find-values", names, e))?;
+    let [parameter] = parameters[..] else {
+        bail!(
+            "--find-values solves for one parameter, and '{names}' names {}: fix the others \
+             with --fix",
+            parameters.len()
+        );
+    };
+    let system = subject.system();
+    let name = system.vars().variable(parameter).name().to_string();
+    let refused = |e| {
+        subject.refused(
+            a.system.as_deref(),
+            &format!("finding the values of {name} with more integrals"),
+            a.when.as_deref(),
+            e,
+        )
+    };
+    let found =
+        brackets::search::exceptional_values(system, options, parameter).map_err(refused)?;
+    let values = std::iter::once(&found.generic_value).chain(found.values.iter().map(|v| &v.value));
+    let mut searches = Vec::new();
+    for value in values {
+        let when = match &a.when {
+            Some(w) => format!("{name} = {value}, {w}"),
+            None => format!("{name} = {value}"),
+        };
+        let mut at = options.clone();
+        at.condition = subject.condition(Some(&when))?;
+        let file = match subject {
+            Subject::File(f) => Some(f.as_ref()),
+            Subject::Builtin(..) => None,
+        };
+        let (report, _) =
+            command_line_search_report(file, &subject.the_name(), system, &at, format)
+                .map_err(refused)?;
+        searches.push(report);
+    }
+    let mut report = exceptional_values_report(
+        &subject.the_name(),
+        system,
+        &found,
+        searches,
+        Caller::CommandLine,
+        format == Format::Json,
+    );
+    report.seconds = start.elapsed().as_secs_f64();
     Ok(subject.tag(report))
 }
 

@@ -16,16 +16,19 @@
 //! # Ok::<(), superint::brackets::EngineError>(())
 //! ```
 //!
-//! `search.rs` writes the search's report, `closure.rs` the closure's, `input.rs` reads what
+//! `search.rs` writes the search's report, `exceptional.rs` that of the values of a parameter
+//! with more integrals (`search --find-values`), `closure.rs` the closure's, `input.rs` reads what
 //! the commands are given (a built-in system by name, conditions, parameters); this file holds
 //! what both reports say alike (the parameters held fixed or symbolic, and how).
 
 mod closure;
+mod exceptional;
 mod input;
 mod search;
 
 pub use brackets::closure::relation_text;
 pub use closure::{closure_report, closure_report_for, file_closure_report};
+pub use exceptional::exceptional_values_report;
 pub(crate) use input::blank_beside_comma;
 pub use input::{
     builtin_system, builtin_system_refused, define_builtin_resonant, parse_condition,

@@ -122,6 +122,15 @@
 //!   "closures": [ { "section", "generators", "degree", "monomials", "rank", "parameters",
 //!                   "closes": bool, "outside": [[a, b]], "unlifted": int,
 //!                   "brackets": [ids], "relations": [ids] } ],
+//!   "exceptional_values": [ { "section", "parameter", "generic": { "value", "dimension",
+//!                   "section" } (the search at a value that is no root of any determinant,
+//!                   shown in section "section"), "values": [ { "value", "dimension",
+//!                   "section" } ] (the rational values with more integrals, increasing, each
+//!                   with the section of the search there), "not_exceptional": [values] (the
+//!                   rational roots of the determinants where the search found no more),
+//!                   "unexamined": ascii | null (the polynomial in the parameter whose
+//!                   irrational and complex roots were not examined), "largest_minor":
+//!                   { "size", "degree" } } ]   (only for `search --find-values`)
 //!   "warnings": [ { "section", "file", "line", "column", "message" } ]   (only where there
 //!                   are any: a name of the section's file run together and read as a
 //!                   product that may not have been meant, `Lxx` beside a function `Lx`;
@@ -142,8 +151,9 @@ use trigpoly::{Expr, Factored, Style, VarKind};
 
 use super::{plain, Options};
 use crate::report::{
-    written_in_functions, ClaimOutcome, ClaimResult, ClosureFacts, Entry, Equations, Facts,
-    ParameterFacts, ProofResult, RankResult, Report, SearchFacts, TableResult, TowerResult,
+    written_in_functions, ClaimOutcome, ClaimResult, ClosureFacts, Entry, Equations,
+    ExceptionalFacts, Facts, ParameterFacts, ProofResult, RankResult, Report, SearchFacts,
+    TableResult, TowerResult, ValueFacts,
 };
 use brackets::Entry as TableEntry;
 
@@ -220,6 +230,7 @@ struct Lists {
     ranks: Vec<Value>,
     searches: Vec<Value>,
     closures: Vec<Value>,
+    exceptional_values: Vec<Value>,
     warnings: Vec<Value>,
 }
 
@@ -236,6 +247,7 @@ impl Lists {
             ranks: Vec::new(),
             searches: Vec::new(),
             closures: Vec::new(),
+            exceptional_values: Vec::new(),
             warnings: Vec::new(),
         }
     }
@@ -278,6 +290,9 @@ impl Lists {
             }
             Entry::Data(Facts::Search(f)) => self.searches.push(search(f, section)),
             Entry::Data(Facts::Closure(f)) => self.closures.push(closure(f, section)),
+            Entry::Data(Facts::ExceptionalValues(f)) => {
+                self.exceptional_values.push(exceptional_values(f, section));
+            }
             Entry::Warning(w) => self.warnings.push(warning(w, Some(section))),
         }
     }
@@ -317,6 +332,9 @@ impl Lists {
             "closures": self.closures,
         });
         // Only where there are any, so that a report without them is as it always was.
+        if !self.exceptional_values.is_empty() {
+            document["exceptional_values"] = Value::Array(self.exceptional_values);
+        }
         if !self.warnings.is_empty() {
             document["warnings"] = Value::Array(self.warnings);
         }
@@ -592,6 +610,20 @@ fn search(f: &SearchFacts, section: u32) -> Value {
         );
     }
     value
+}
+
+/// The exceptional values of `superint search --find-values`.
+fn exceptional_values(f: &ExceptionalFacts, section: u32) -> Value {
+    let value = |v: &ValueFacts| json!({ "value": v.value, "dimension": v.dimension, "section": v.section });
+    json!({
+        "section": section,
+        "parameter": f.parameter,
+        "generic": value(&f.generic),
+        "values": f.values.iter().map(value).collect::<Vec<_>>(),
+        "not_exceptional": f.not_exceptional,
+        "unexamined": f.unexamined,
+        "largest_minor": { "size": f.largest_minor.0, "degree": f.largest_minor.1 },
+    })
 }
 
 fn closure(f: &ClosureFacts, section: u32) -> Value {

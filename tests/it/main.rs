@@ -226,6 +226,7 @@ mod cli;
 mod closure_denominators;
 mod denominators;
 mod discovery;
+mod exceptional_values;
 mod latex_input;
 mod level_set_claims;
 mod library;

@@ -66,7 +66,9 @@ pub const MAX_MINOR: usize = 400;
 pub struct ExceptionalValues {
     /// The parameter solved for.
     pub parameter: Var,
-    /// The ordinary search at a generic value, no root of any block's determinant.
+    /// A generic value: no root of any block's determinant.
+    pub generic_value: Rational,
+    /// The ordinary search at it.
     pub generic: SearchResult,
     /// The rational values where the space holds more integrals, increasing, each with the
     /// ordinary search there.
@@ -173,6 +175,7 @@ pub fn exceptional_values(
         .transpose()?;
     Ok(ExceptionalValues {
         parameter,
+        generic_value,
         generic,
         values,
         spurious,

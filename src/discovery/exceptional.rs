@@ -1,0 +1,141 @@
+//! The report of `superint search --find-values`: the values of one parameter at which the
+//! space holds more integrals than at a generic value
+//! ([`brackets::search::exceptional_values`]), then the search at the generic value and at
+//! each of those values, as `--when` shows it.
+
+use brackets::search::ExceptionalValues;
+use brackets::System;
+use trigpoly::Style;
+
+use crate::report::{counted, listed};
+use crate::report::{Entry, ExceptionalFacts, Facts, Report, Section, SummaryKind, ValueFacts};
+use crate::system_file::Caller;
+
+/// The report of what [`brackets::search::exceptional_values`] `found` for `name`, `system`:
+/// a section that says which values have more integrals (and, with `facts`, the JSON's data),
+/// then the sections of `searches`, the reports of the search at the generic value and at each
+/// exceptional value in order, numbered on and titled by their value.
+pub fn exceptional_values_report(
+    name: &str,
+    system: &System,
+    found: &ExceptionalValues,
+    searches: Vec<Report>,
+    caller: Caller,
+    facts: bool,
+) -> Report {
+    let vars = system.vars();
+    // A value as the prose prints numbers, with a minus sign.
+    let shown = |v: &trigpoly::Rational| v.to_string().replace('-', "−");
+    let t = vars.variable(found.parameter).unicode().to_string();
+    let mut entries = vec![Entry::Text(format!(
+        "The equations `{{Σ c_j φ_j, H}} = 0` with `{t}` kept are `M({t}) c = 0`, each entry of \
+         `M` a polynomial in `{t}`; their rank drops, and the space holds more integrals, only \
+         at a root of the determinant of a generic minor of each block of `M` (the largest has {}, \
+         its determinant of degree {} in `{t}`). Each rational root was searched at exactly.",
+        counted(found.largest_minor.0, "row"),
+        found.largest_minor.1
+    ))];
+    // The sections of the searches begin after this one, each search's after the last's.
+    let starts: Vec<u32> = searches
+        .iter()
+        .scan(2, |next, r| {
+            let start = *next;
+            *next += u32::try_from(r.sections.len()).unwrap_or(u32::MAX);
+            Some(start)
+        })
+        .collect();
+    let section_of = |k: usize| starts.get(k).copied().unwrap_or_default();
+    let dimension = |k: usize, r: &brackets::search::SearchResult| {
+        format!(
+            "{} (section {})",
+            counted(r.basis.len(), "integral"),
+            section_of(k)
+        )
+    };
+    entries.push(Entry::Text(format!(
+        "For a generic `{t}` (searched at `{t} = {}`, no root): {}.",
+        shown(&found.generic_value),
+        dimension(0, &found.generic)
+    )));
+    let values: Vec<String> = (found.values.iter().enumerate())
+        .map(|(k, v)| {
+            format!(
+                "at `{t} = {}`, {}",
+                shown(&v.value),
+                dimension(k + 1, &v.found)
+            )
+        })
+        .collect();
+    entries.push(Entry::Text(match values.is_empty() {
+        true => format!("No rational value of `{t}` has more integrals."),
+        false => format!("More integrals {}.", listed(&values)),
+    }));
+    if !found.spurious.is_empty() {
+        let roots: Vec<String> = (found.spurious.iter())
+            .map(|r| format!("`{t} = {}`", shown(r)))
+            .collect();
+        entries.push(Entry::Text(format!(
+            "Roots of the determinants where the search finds no more integrals: {}.",
+            listed(&roots)
+        )));
+    }
+    entries.push(Entry::Text(match &found.unexamined {
+        Some(p) => format!(
+            "Other values may lie among the roots of `{p}`, which are not rational: not examined."
+        ),
+        None => format!("Every root of the determinants is rational: no other value of `{t}` has more integrals."),
+    }));
+    if facts {
+        let value = |k: usize, v: &trigpoly::Rational, r: &brackets::search::SearchResult| {
+            ValueFacts::new(v.to_string(), r.basis.len(), section_of(k))
+        };
+        entries.push(Entry::Data(Facts::ExceptionalValues(
+            ExceptionalFacts::new(
+                vars.variable(found.parameter).name().to_string(),
+                value(0, &found.generic_value, &found.generic),
+                (found.values.iter().enumerate())
+                    .map(|(k, v)| value(k + 1, &v.value, &v.found))
+                    .collect(),
+                found.spurious.iter().map(ToString::to_string).collect(),
+                found.unexamined.as_ref().map(|p| p.render(Style::Ascii)),
+                found.largest_minor,
+            ),
+        )));
+    }
+    let first = searches
+        .first()
+        .and_then(|r| r.sections.first())
+        .map(|s| s.names.clone())
+        .unwrap_or_else(|| crate::render::tex::Names::of_system(system));
+    let mut sections = vec![Section {
+        number: 1,
+        title: format!("Values of `{t}` with more integrals"),
+        file: None,
+        entries,
+        names: first,
+    }];
+    let mut seconds = 0.0;
+    let at_values = std::iter::once(format!("`{t} = {}` (generic)", shown(&found.generic_value)))
+        .chain(
+            found
+                .values
+                .iter()
+                .map(|v| format!("`{t} = {}`", shown(&v.value))),
+        );
+    for (report, at) in searches.into_iter().zip(at_values) {
+        seconds += report.seconds;
+        for mut section in report.sections {
+            section.number = u32::try_from(sections.len() + 1).unwrap_or(u32::MAX);
+            section.title = format!("At {at}: {}", section.title);
+            sections.push(section);
+        }
+    }
+    Report {
+        title: format!("Values of `{t}` with more integrals for {name}"),
+        subtitle: String::new(),
+        sections,
+        summary: SummaryKind::Claims,
+        seconds,
+        caller,
+    }
+}

@@ -1,0 +1,171 @@
+//! `superint search --find-values`: the values of one parameter at which the space holds more
+//! integrals, in every format, and what it refuses.
+
+use crate::cli::compile_within;
+use crate::{normalize, scratch_text, superint_json, superint_ok, superint_refused};
+
+const HENON_HEILES: &str = "systems/henon-heiles.toml";
+
+/// The Hénon–Heiles family at A = B = 1, quadratic in the momenta, degree 4 in the positions.
+fn henon_heiles(format: &str) -> String {
+    superint_ok(&[
+        "search",
+        HENON_HEILES,
+        "--find-values",
+        "C",
+        "--fix",
+        "A=1,B=1",
+        "--momenta-degree",
+        "2",
+        "--positions-degree",
+        "4",
+        "--format",
+        format,
+        "--no-timings",
+    ])
+}
+
+#[test]
+fn henon_heiles_has_a_second_quadratic_integral_exactly_at_c_one_third_and_two_in_text() {
+    let text = normalize(&henon_heiles("text"));
+    assert!(
+        text.contains("For a generic C (searched at C = 7, no root): 2 integrals (section 2)."),
+        "{text}"
+    );
+    assert!(
+        text.contains(
+            "More integrals at C = 1/3, 3 integrals (section 4) and at C = 2, 3 integrals \
+             (section 6)."
+        ),
+        "{text}"
+    );
+    assert!(
+        text.contains("Every root of the determinants is rational"),
+        "{text}"
+    );
+    // Each value's search as --when prints it: the separable case's integral at C = 1/3, the
+    // KdV case's at C = 2, each proved.
+    assert!(text.contains("4 At C = 1/3: Search"), "{text}");
+    assert!(text.contains("I2 = 3 p_x p_y + x³ + 3xy² + 3xy"), "{text}");
+    assert!(
+        text.contains("I3 = 4x p_x p_y − 4y p_x² − 3 p_y² + x⁴ + 4x²y² − 2x²y − 12y³ − 3y²"),
+        "{text}"
+    );
+    assert!(text.contains("3 claims: 3 proved, 0 refuted"), "{text}");
+}
+
+#[test]
+fn henon_heiles_exceptional_values_in_json() {
+    let json = superint_json(&[
+        "search",
+        HENON_HEILES,
+        "--find-values",
+        "C",
+        "--fix",
+        "A=1,B=1",
+        "--momenta-degree",
+        "2",
+        "--positions-degree",
+        "4",
+    ]);
+    let found = &json["exceptional_values"][0];
+    assert_eq!(found["parameter"], "C");
+    assert_eq!(found["section"], 1);
+    assert_eq!(found["generic"]["value"], "7");
+    assert_eq!(found["generic"]["dimension"], 2);
+    let values: Vec<(&str, u64, u64)> = found["values"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| {
+            let n = |k: &str| v[k].as_u64().unwrap();
+            (v["value"].as_str().unwrap(), n("dimension"), n("section"))
+        })
+        .collect();
+    assert_eq!(values, [("1/3", 3, 4), ("2", 3, 6)]);
+    assert!(found["unexamined"].is_null());
+    // The searches, one a value, and their claims, all proved.
+    assert_eq!(json["searches"].as_array().unwrap().len(), 3);
+    assert_eq!(json["summary"]["all_proved"], true);
+    // An ordinary search has no such list.
+    let plain = superint_json(&["search", HENON_HEILES, "--momenta-degree", "1"]);
+    assert!(plain.get("exceptional_values").is_none());
+}
+
+#[test]
+fn henon_heiles_exceptional_values_in_markdown_and_latex() {
+    let markdown = henon_heiles("markdown");
+    assert!(
+        markdown.contains("## 1. Values of `C` with more integrals"),
+        "{markdown}"
+    );
+    assert!(markdown.contains("at `C = 1/3`"), "{markdown}");
+    let latex = henon_heiles("latex");
+    assert!(
+        latex.contains("$C = 1/3$") || latex.contains("$C = \\frac{1}{3}$"),
+        "{latex}"
+    );
+    assert!(latex.trim_end().ends_with("\\end{document}"));
+    compile_within(&latex, 1.0);
+}
+
+#[test]
+fn an_irrational_value_is_reported_with_its_polynomial_not_claimed() {
+    // Isotropic where a² = 2: the value √2 is not rational.
+    let file = scratch_text(
+        "exceptional-values",
+        "irrational.toml",
+        "name = \"oscillator\"\nhamiltonian = \"(p_x^2 + p_y^2)/2 + (x^2 + (a^2 - 1)*y^2)/2\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\"]\n",
+    );
+    let text = normalize(&superint_ok(&[
+        "search",
+        file.to_str().unwrap(),
+        "--find-values",
+        "a",
+        "--positions-degree",
+        "2",
+    ]));
+    assert!(text.contains("More integrals at a = −1"), "{text}");
+    assert!(
+        text.contains("Other values may lie among the roots of"),
+        "{text}"
+    );
+    assert!(text.contains("not examined"), "{text}");
+}
+
+#[test]
+fn what_find_values_does_not_take_is_refused() {
+    let search = |extra: &[&str]| {
+        let mut args = vec!["search", HENON_HEILES, "--find-values"];
+        args.extend(extra);
+        superint_refused(&args)
+    };
+    let two = search(&["A,C"]);
+    assert!(
+        two.contains("--find-values solves for one parameter"),
+        "{two}"
+    );
+    let symbolic = search(&["C", "--symbolic", "A"]);
+    assert!(symbolic.contains("cannot be used with"), "{symbolic}");
+    let on = search(&["C", "--on", "x = 0"]);
+    assert!(on.contains("cannot be used with"), "{on}");
+    let when = search(&["C", "--when", "C = 2"]);
+    assert!(when.contains("a condition that sets C"), "{when}");
+    let fixed = search(&["C", "--fix", "C=2"]);
+    assert!(fixed.contains("a value fixed for C"), "{fixed}");
+    let unknown = search(&["D"]);
+    assert!(unknown.contains("--find-values"), "{unknown}");
+    // A parameter in a declared denominator.
+    let file = scratch_text(
+        "exceptional-values",
+        "denominator.toml",
+        "name = \"d\"\nhamiltonian = \"(p_x^2 + p_y^2)/2 + a/(x - a*y)^2\"\n[phase_space]\n\
+         coordinates = [\"x\", \"y\"]\nparameters = [\"a\"]\ndenominators = [\"x - a*y\"]\n",
+    );
+    let denominator = superint_refused(&["search", file.to_str().unwrap(), "--find-values", "a"]);
+    assert!(
+        denominator.contains("a in a declared denominator or radical"),
+        "{denominator}"
+    );
+}
