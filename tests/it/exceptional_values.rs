@@ -7,22 +7,27 @@ use crate::{normalize, scratch_text, superint_json, superint_ok, superint_refuse
 const HENON_HEILES: &str = "systems/henon-heiles.toml";
 
 /// The Hénon–Heiles family at A = B = 1, quadratic in the momenta, degree 4 in the positions.
+const HENON_HEILES_VALUES: [&str; 9] = [
+    "search",
+    HENON_HEILES,
+    "--find-values",
+    "C",
+    "--fix",
+    "A=1,B=1",
+    "--momenta-degree",
+    "2",
+    "--positions-degree",
+];
+
+/// [`HENON_HEILES_VALUES`] at positions degree 4, in `format`.
 fn henon_heiles(format: &str) -> String {
-    superint_ok(&[
-        "search",
-        HENON_HEILES,
-        "--find-values",
-        "C",
-        "--fix",
-        "A=1,B=1",
-        "--momenta-degree",
-        "2",
-        "--positions-degree",
-        "4",
-        "--format",
-        format,
-        "--no-timings",
-    ])
+    superint_ok(
+        &[
+            &HENON_HEILES_VALUES[..],
+            &["4", "--format", format, "--no-timings"],
+        ]
+        .concat(),
+    )
 }
 
 #[test]
@@ -56,18 +61,7 @@ fn henon_heiles_has_a_second_quadratic_integral_exactly_at_c_one_third_and_two_i
 
 #[test]
 fn henon_heiles_exceptional_values_in_json() {
-    let json = superint_json(&[
-        "search",
-        HENON_HEILES,
-        "--find-values",
-        "C",
-        "--fix",
-        "A=1,B=1",
-        "--momenta-degree",
-        "2",
-        "--positions-degree",
-        "4",
-    ]);
+    let json = superint_json(&[&HENON_HEILES_VALUES[..], &["4"]].concat());
     let found = &json["exceptional_values"][0];
     assert_eq!(found["parameter"], "C");
     assert_eq!(found["section"], 1);

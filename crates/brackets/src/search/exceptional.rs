@@ -54,7 +54,7 @@ use crate::error::EngineError;
 use crate::system::System;
 use crate::univariate::IntPoly;
 
-use super::problem::{canonical, Components};
+use super::problem::{blocks, canonical};
 use super::{fixed_search_problem, search, FixedSearch, SearchOptions, SearchResult};
 
 /// The largest block whose determinant is computed: past it the search stops with a message
@@ -127,7 +127,7 @@ pub fn exceptional_values(
     let matrix = PolyMatrix::new(&images, parameter, &problem.variables.angles);
     let mut determinants = Vec::new();
     let mut largest_minor = (0, 0);
-    for block in matrix.blocks() {
+    for block in blocks(&matrix.columns, matrix.rows) {
         let minor = matrix.generic_minor(&block);
         if minor.len() > MAX_MINOR {
             return Err(EngineError::Invalid(format!(
@@ -310,27 +310,6 @@ impl PolyMatrix {
             })
             .collect();
         PolyMatrix { columns, rows }
-    }
-
-    /// The unknowns by block: those that share an equation, transitively.
-    fn blocks(&self) -> Vec<Vec<usize>> {
-        let n = self.columns.len();
-        let mut uf = Components((0..n).collect());
-        let mut first: Vec<Option<usize>> = vec![None; self.rows];
-        for (j, column) in self.columns.iter().enumerate() {
-            for (row, _) in column {
-                match first[*row] {
-                    Some(f) => uf.union(f, j),
-                    None => first[*row] = Some(j),
-                }
-            }
-        }
-        let mut groups: BTreeMap<usize, Vec<usize>> = BTreeMap::new();
-        for j in 0..n {
-            let root = uf.find(j);
-            groups.entry(root).or_default().push(j);
-        }
-        groups.into_values().collect()
     }
 
     /// A square submatrix of the block's columns of the block's generic rank, nonsingular at
@@ -602,22 +581,10 @@ fn is_prime(n: u64) -> bool {
 mod tests {
     use super::*;
     use crate::search::SearchSpace;
-    use crate::PhaseSpace;
-    use trigpoly::Vars;
 
     /// The system of the Hamiltonian `h` in `x, y, p_x, p_y` and the `parameters`.
     fn planar(h: &str, parameters: &[&str]) -> System {
-        let mut builder = Vars::builder()
-            .coordinate("x")
-            .coordinate("y")
-            .momentum("p_x")
-            .momentum("p_y");
-        for p in parameters {
-            builder = builder.parameter(p);
-        }
-        let vars = builder.build().unwrap();
-        let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")]).unwrap();
-        System::new("test", space, Expr::parse(&vars, h).unwrap()).unwrap()
+        crate::search::level_set::tests::on_the_plane("test", h, parameters)
     }
 
     fn values_of(found: &ExceptionalValues) -> Vec<String> {

@@ -813,7 +813,7 @@ impl OnLevel {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use trigpoly::{Expr, Rational, VarKind, Vars};
 
     use super::{has_no_repeated_factor, LevelSet};
@@ -852,7 +852,7 @@ mod tests {
 
     /// A system on the plane's canonical coordinates `x`, `y`, `p_x`, `p_y`, with `parameters`
     /// and the Hamiltonian `h`.
-    fn on_the_plane(name: &str, h: &str, parameters: &[&str]) -> System {
+    pub(in crate::search) fn on_the_plane(name: &str, h: &str, parameters: &[&str]) -> System {
         let mut builder = Vars::builder()
             .coordinate("x")
             .coordinate("y")

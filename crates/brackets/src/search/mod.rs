@@ -139,7 +139,7 @@ use parameters::{
     fixed_hamiltonian_and_condition, module_generators, parameter_denominators,
     parameter_multiples, parameter_values,
 };
-use problem::{real_rows, AtValues, Components, Problem, RowIndex, IMAGE_BLOCK};
+use problem::{real_rows, AtValues, Problem, RowIndex, IMAGE_BLOCK};
 use proof::{flow_vanishes, lead, primitive_vector};
 
 /// Finds a basis of every integral of `system` in the space of `options`: each element of
@@ -651,24 +651,7 @@ struct Kernel {
 /// blocks (connected components), solved on the pool's threads and kept in the order of the
 /// blocks; the basis sorted by leading (last) unknown, i.e. in the order of the unknowns.
 fn kernel_by_blocks(columns: &[SparseVec<Rational>], nrows: usize) -> Kernel {
-    let n = columns.len();
-    let mut uf = Components((0..n).collect());
-    let mut first_col: Vec<Option<usize>> = vec![None; nrows];
-    for (j, col) in columns.iter().enumerate() {
-        for (r, _) in col {
-            match first_col[*r] {
-                Some(f) => uf.union(f, j),
-                None => first_col[*r] = Some(j),
-            }
-        }
-    }
-    let mut groups: FxHashMap<usize, Vec<usize>> = FxHashMap::default();
-    for j in 0..n {
-        let r = uf.find(j);
-        groups.entry(r).or_default().push(j);
-    }
-    let mut groups: Vec<Vec<usize>> = groups.into_values().collect();
-    groups.sort();
+    let groups = problem::blocks(columns, nrows);
     let largest_component = groups.iter().map(Vec::len).max().unwrap_or(0);
     // The blocks are independent: solved on the pool's threads, kept in the order of the blocks.
     let kernels: Vec<Vec<SparseVec<Rational>>> = groups

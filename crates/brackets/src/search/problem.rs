@@ -4,6 +4,7 @@
 use std::borrow::Cow;
 
 use rayon::prelude::*;
+use rustc_hash::FxHashMap;
 use trigpoly::{
     Expr, GaussianRational, LimitKind, MonomialIndex, Rational, Term, Var, VarKind, Vars,
 };
@@ -835,18 +836,42 @@ pub(super) fn push_nonzero<F: Field>(v: &mut SparseVec<F>, j: usize, x: F) {
     }
 }
 
+/// The columns' indices by block, those that share a row, transitively (connected
+/// components): each block increasing, the blocks by their first index.
+pub(super) fn blocks<T>(columns: &[Vec<(usize, T)>], nrows: usize) -> Vec<Vec<usize>> {
+    let n = columns.len();
+    let mut uf = Components((0..n).collect());
+    let mut first_col: Vec<Option<usize>> = vec![None; nrows];
+    for (j, col) in columns.iter().enumerate() {
+        for (r, _) in col {
+            match first_col[*r] {
+                Some(f) => uf.union(f, j),
+                None => first_col[*r] = Some(j),
+            }
+        }
+    }
+    let mut groups: FxHashMap<usize, Vec<usize>> = FxHashMap::default();
+    for j in 0..n {
+        let r = uf.find(j);
+        groups.entry(r).or_default().push(j);
+    }
+    let mut groups: Vec<Vec<usize>> = groups.into_values().collect();
+    groups.sort();
+    groups
+}
+
 /// Union–find.
-pub(super) struct Components(pub(super) Vec<usize>);
+struct Components(Vec<usize>);
 
 impl Components {
-    pub(super) fn find(&mut self, mut a: usize) -> usize {
+    fn find(&mut self, mut a: usize) -> usize {
         while self.0[a] != a {
             self.0[a] = self.0[self.0[a]];
             a = self.0[a];
         }
         a
     }
-    pub(super) fn union(&mut self, a: usize, b: usize) {
+    fn union(&mut self, a: usize, b: usize) {
         let (ra, rb) = (self.find(a), self.find(b));
         if ra != rb {
             self.0[ra.max(rb)] = ra.min(rb);
