@@ -189,6 +189,16 @@ const COMMANDS: &[(&str, &str)] = &[
          --trig-degree 0 --when 'B = 16*A, C = 16/3' --symbolic A --new-only",
     ),
     (
+        "hh-values-quadratic",
+        "superint search systems/henon-heiles.toml --find-values C --fix A=1,B=1 \
+         --momenta-degree 2 --positions-degree 4 --trig-degree 0",
+    ),
+    (
+        "hh-values-quartic",
+        "superint search systems/henon-heiles.toml --find-values C --fix B=16 \
+         --momenta-degree 4 --positions-degree 6 --trig-degree 0",
+    ),
+    (
         "kepler",
         "superint search systems/kepler.toml --momenta-degree 2 --positions-degree 2 \
          --trig-degree 1 --laurent",
@@ -1361,6 +1371,47 @@ fn henon_heiles_kdv_integral_for_every_a_and_b() {
     let k = file.parse_argument("K").expect("K parses");
     assert!(generators.contains(&&k), "{generators:?}");
     assert!(r.basis.iter().all(|f| f.proved_fixed));
+}
+
+/// The values of `C` with a second integral quadratic in the momenta, found from `H` alone
+/// (results.md §7): at `A = B = 1`, the separable case `C = 1/3` and the KdV case `C = 2`,
+/// every root of the determinants rational.
+#[test]
+fn henon_heiles_values_of_c_with_a_second_quadratic_integral_found_from_h_alone() {
+    expect_alone(
+        "hh-values-quadratic",
+        &[
+            "For a generic C (searched at C = 7, no root): 2 integrals (section 2).",
+            "More integrals at C = 1/3, 3 integrals (section 4) and at C = 2, 3 integrals \
+             (section 6).",
+            "Roots of the determinants where the search finds no more integrals: C = 2/15 and \
+             C = 2/3.",
+            "Every root of the determinants is rational: no other value of C has more integrals.",
+            "I2 = 3 p_x p_y + x³ + 3xy² + 3xy",
+            "I3 = 4x p_x p_y − 4y p_x² − 3 p_y² + x⁴ + 4x²y² − 2x²y − 12y³ − 3y²",
+            "3 claims: 3 proved, 0 refuted",
+        ],
+    );
+}
+
+/// The values of `C` with an integral quartic in the momenta at `A = 1, B = 16`, from `H`
+/// alone (results.md §7): the quartic case `C = 16/3` (the file's `Q`), and `C = 2`, whose
+/// quadratic integral is there at every `B`; the quadratic `21C² − 12C + 272` left, with no
+/// real root.
+#[test]
+fn henon_heiles_values_of_c_with_a_quartic_integral_at_b_sixteen_found_from_h_alone() {
+    expect_alone(
+        "hh-values-quartic",
+        &[
+            "For a generic C (searched at C = 7, no root): 3 integrals (section 2).",
+            "More integrals at C = 2, 4 integrals (section 4) and at C = 16/3, 4 integrals \
+             (section 6).",
+            "Other values may lie among the roots of 21C² − 12C + 272, which are not rational: \
+             not examined.",
+            "I3 = 18 p_x² p_y² + 9 p_y⁴ + 12x³ p_x p_y + 36x²y p_y² + 18x² p_y²",
+            "4 claims: 4 proved, 0 refuted",
+        ],
+    );
 }
 
 #[test]
