@@ -213,6 +213,15 @@ fn refuse(system: &System, options: &SearchOptions, parameter: Var) -> Result<()
             "a condition that sets {name}, the parameter solved for"
         ))
     } else if system
+        .hamiltonian()
+        .terms()
+        .into_iter()
+        .any(|term| term.exponent(parameter) < 0)
+    {
+        Some(format!(
+            "a negative power of {name} in H (name its inverse a parameter instead)"
+        ))
+    } else if system
         .space()
         .denominator_atoms()
         .iter()
@@ -671,6 +680,15 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(refused.contains("only a parameter"), "{refused}");
+    }
+
+    #[test]
+    fn a_parameter_with_a_negative_power_in_h_is_refused_not_a_panic() {
+        let system = planar("(p_x^2 + p_y^2)/2 + (x^2 + y^2/a)/2", &["a"]);
+        let refused = exceptional_values(&system, &space(2, 2), system.var("a"))
+            .unwrap_err()
+            .to_string();
+        assert!(refused.contains("a negative power of a in H"), "{refused}");
     }
 
     #[test]
