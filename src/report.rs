@@ -56,6 +56,9 @@ pub enum SummaryKind {
     },
     /// No claim, a computation (a bracket, a table): `computed exactly (0.01 s)`.
     Computed,
+    /// The claims of several searches, each section's its own, so that `I2` of two searches
+    /// is two claims: `8 claims: 8 proved, 0 refuted`.
+    Searches,
 }
 
 /// What a claim is expected to do: a system file marks deliberately false claims
@@ -710,7 +713,8 @@ impl Report {
 
     /// The claim ids in order of first appearance, each with whether all its checks were
     /// proved. The paper's ids (`C12`) gather checks across the report; the ids of a check of
-    /// system files are their files' own, so the same id in two files is two claims.
+    /// system files are their files' own, so the same id in two files is two claims, and so
+    /// are those of the searches of `search --find-values` ([`SummaryKind::Searches`]).
     pub fn claim_ids(&self) -> Vec<(String, bool)> {
         self.claim_outcomes()
             .into_iter()
@@ -721,10 +725,13 @@ impl Report {
     /// The claim ids in order of first appearance, as [`Report::claim_ids`], each with the
     /// outcome of its checks: refuted when one was, else undecided when one was, else proved.
     pub fn claim_outcomes(&self) -> Vec<(String, ClaimOutcome)> {
-        let per_file = matches!(self.summary, SummaryKind::Check { .. });
+        let per_section = matches!(
+            self.summary,
+            SummaryKind::Check { .. } | SummaryKind::Searches
+        );
         let mut out: Vec<(u32, String, ClaimOutcome)> = Vec::new();
         for (section, c) in self.claims_by_section() {
-            let section = if per_file { section } else { 0 };
+            let section = if per_section { section } else { 0 };
             match out
                 .iter_mut()
                 .find(|(s, id, _)| *s == section && *id == c.id)

@@ -134,7 +134,7 @@ pub fn exceptional_values_report(
         title: format!("Values of `{t}` with more integrals for {name}"),
         subtitle: String::new(),
         sections,
-        summary: SummaryKind::Claims,
+        summary: SummaryKind::Searches,
         seconds,
         caller,
     }

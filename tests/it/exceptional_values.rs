@@ -56,7 +56,8 @@ fn henon_heiles_has_a_second_quadratic_integral_exactly_at_c_one_third_and_two_i
         text.contains("I3 = 4x p_x p_y − 4y p_x² − 3 p_y² + x⁴ + 4x²y² − 2x²y − 12y³ − 3y²"),
         "{text}"
     );
-    assert!(text.contains("3 claims: 3 proved, 0 refuted"), "{text}");
+    // Each search's I1, I2, … are its own claims: 2 at the generic value, 3 at each value.
+    assert!(text.contains("8 claims: 8 proved, 0 refuted"), "{text}");
 }
 
 #[test]
@@ -81,6 +82,7 @@ fn henon_heiles_exceptional_values_in_json() {
     // The searches, one a value, and their claims, all proved.
     assert_eq!(json["searches"].as_array().unwrap().len(), 3);
     assert_eq!(json["summary"]["all_proved"], true);
+    assert_eq!(json["summary"]["claims"], 8);
     // An ordinary search has no such list.
     let plain = superint_json(&["search", HENON_HEILES, "--momenta-degree", "1"]);
     assert!(plain.get("exceptional_values").is_none());
