@@ -151,6 +151,14 @@ impl IntPoly {
         a.primitive()
     }
 
+    /// The primitive least common multiple: of two square-free polynomials, each irreducible
+    /// factor of either once.
+    #[must_use]
+    pub fn lcm(&self, other: &IntPoly) -> IntPoly {
+        let g = self.gcd(other);
+        self.mul(&other.divide_out(&g)).primitive()
+    }
+
     /// The exact quotient by `d`, a divisor up to a constant, made primitive.
     fn divide_out(&self, d: &IntPoly) -> IntPoly {
         self.pseudo_divide(d).0.primitive()
@@ -414,6 +422,18 @@ mod tests {
             .mul(&IntPoly::from_i64(&[-1, 1]));
         let (roots, _) = roots_text(&f);
         assert_eq!(roots, ["999/1000", "1000/1001", "1"]);
+    }
+
+    #[test]
+    fn the_lcm_holds_each_shared_factor_once() {
+        // (t² − 2)(t + 1) and (t² − 2)(3t − 1): (t² − 2)(t + 1)(3t − 1).
+        let shared = IntPoly::from_i64(&[-2, 0, 1]);
+        let f = shared.mul(&IntPoly::from_i64(&[1, 1]));
+        let g = shared.mul(&IntPoly::from_i64(&[-1, 3]));
+        let expected = f.mul(&IntPoly::from_i64(&[-1, 3]));
+        assert_eq!(f.lcm(&g), expected);
+        assert_eq!(f.lcm(&f), f);
+        assert_eq!(IntPoly::from_i64(&[1]).lcm(&g), g);
     }
 
     #[test]

@@ -75,7 +75,7 @@ pub struct ExceptionalValues {
     pub values: Vec<ExceptionalValue>,
     /// The rational roots of the determinants where the search found no more integrals.
     pub spurious: Vec<Rational>,
-    /// The product of the determinants' square-free parts with their rational linear factors
+    /// The lcm of the determinants' square-free parts with their rational linear factors
     /// divided out, as a polynomial in the parameter, when it is not constant: its roots, not
     /// rational, were not examined.
     pub unexamined: Option<Expr>,
@@ -141,15 +141,18 @@ pub fn exceptional_values(
         determinants.push(det);
     }
     let mut roots: Vec<Rational> = Vec::new();
+    // Each block's square-free part with its rational factors divided out, and their lcm:
+    // blocks alike share factors, and their product's square-free part took seconds.
     let mut rest = IntPoly::from_i64(&[1]);
     for det in &determinants {
         let (found, left) = det.rational_roots()?;
         roots.extend(found);
-        rest = rest.mul(&left);
+        if !left.divides(&rest) {
+            rest = rest.lcm(&left);
+        }
     }
     roots.sort();
     roots.dedup();
-    let rest = rest.square_free();
     let generic_value = (1..)
         .map(|k| Rational::new(2 * k + 5, 1))
         .find(|v| determinants.iter().all(|d| !d.vanishes_at(v)))
