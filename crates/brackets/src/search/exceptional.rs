@@ -644,6 +644,33 @@ mod tests {
     }
 
     #[test]
+    fn the_anisotropic_oscillator_at_degree_three_is_exceptional_at_its_resonances_one_to_two_and_one_to_three(
+    ) {
+        // (x² + a y²)/2 with a = (ω_y/ω_x)²: the cubic integrals of 1:2 and 2:1 (two each),
+        // the one of 1:3 and 3:1 that degree 3 in the momenta and positions holds, the
+        // isotropic a = 1 and the free a = 0; the other roots of the determinants are not
+        // values (a = 2, say).
+        let system = planar("(p_x^2 + p_y^2)/2 + (x^2 + a*y^2)/2", &["a"]);
+        let found = exceptional_values(&system, &space(3, 3), system.var("a")).unwrap();
+        assert_eq!(values_of(&found), ["0", "1/9", "1/4", "1", "4", "9"]);
+        assert!(found.unexamined.is_none());
+        assert!(!found.spurious.is_empty());
+        let generic = found.generic.basis.len();
+        let more: Vec<usize> = (found.values.iter())
+            .map(|v| v.found.basis.len() - generic)
+            .collect();
+        assert_eq!(more, [3, 1, 2, 7, 2, 1]);
+    }
+
+    #[test]
+    fn a_negative_value_is_found() {
+        // (x² + (a + 2) y²)/2: y free at a = −2, isotropic at a = −1.
+        let system = planar("(p_x^2 + p_y^2)/2 + (x^2 + (a + 2)*y^2)/2", &["a"]);
+        let found = exceptional_values(&system, &space(2, 2), system.var("a")).unwrap();
+        assert_eq!(values_of(&found), ["-2", "-1"]);
+    }
+
+    #[test]
     fn a_shifted_one_to_two_oscillator_has_no_exceptional_value() {
         // The energies of x and y are integrals for every a, and nothing else of degree 2.
         let system = planar("(p_x^2 + p_y^2)/2 + (x^2 + 4*y^2)/2 + a*x", &["a"]);
