@@ -165,3 +165,40 @@ fn what_find_values_does_not_take_is_refused() {
         "{denominator}"
     );
 }
+
+#[test]
+fn the_heavy_top_has_one_more_integral_at_the_kovalevskaya_ratio_i1_equal_i2_equal_2_i3_alone() {
+    // H with k = 1/I3 (a negative power of I3 is refused): k = 2 is Kovalevskaya's ratio and
+    // her quartic integral; k = 1 the spherical top, where M1 is one too.
+    let file = scratch_text(
+        "exceptional-values",
+        "heavy-top.toml",
+        "name = \"top\"\nhamiltonian = \"(M1^2 + M2^2)/2 + k*M3^2/2 - c*gamma1\"\n\
+         [phase_space]\nvariables = [\"M1\", \"M2\", \"M3\", \"gamma1\", \"gamma2\", \"gamma3\"]\n\
+         parameters = [\"k\", \"c\"]\n[poisson]\n\"{M1, M2}\" = \"M3\"\n\"{M2, M3}\" = \"M1\"\n\
+         \"{M3, M1}\" = \"M2\"\n\"{M1, gamma2}\" = \"gamma3\"\n\"{M1, gamma3}\" = \"-gamma2\"\n\
+         \"{M2, gamma3}\" = \"gamma1\"\n\"{M2, gamma1}\" = \"-gamma3\"\n\
+         \"{M3, gamma1}\" = \"gamma2\"\n\"{M3, gamma2}\" = \"-gamma1\"\n",
+    );
+    let json = superint_json(&[
+        "search",
+        file.to_str().unwrap(),
+        "--find-values",
+        "k",
+        "--poisson-degree",
+        "4",
+    ]);
+    let found = &json["exceptional_values"][0];
+    let generic = found["generic"]["dimension"].as_u64().unwrap();
+    let values: Vec<(&str, u64)> = (found["values"].as_array().unwrap().iter())
+        .map(|v| {
+            let more = v["dimension"].as_u64().unwrap() - generic;
+            (v["value"].as_str().unwrap(), more)
+        })
+        .collect();
+    assert_eq!(values, [("1", 10), ("2", 1)]);
+    assert_eq!(json["summary"]["all_proved"], true);
+    // With I3 itself, in a denominator of H: refused, exit 2.
+    let refused = superint_refused(&["search", "systems/heavy-top.toml", "--find-values", "I3"]);
+    assert!(refused.contains("a negative power of I3 in H"), "{refused}");
+}
