@@ -41,8 +41,8 @@ pub(crate) struct Clearing {
 
 impl Clearing {
     /// The map for `vectors` (every column and target), `None` without atoms or radicals.
-    /// Refused: an atom's polynomial that vanishes at the fixed values (`x − a` cannot, `a − b`
-    /// at `a = b = 1` does).
+    /// Refused: an atom that a vector divides by whose polynomial vanishes at the fixed values
+    /// (`x − a` cannot, `a − b` at `a = b = 1` does).
     pub(crate) fn new<'a>(
         atoms: &[(Var, Expr)],
         radicals: &[(Var, Expr)],
@@ -70,7 +70,11 @@ impl Clearing {
         let mut out = Vec::with_capacity(atoms.len());
         for ((v, d), n) in atoms.iter().zip(powers) {
             let at = fix_parameters(d, parameters)?;
-            if at.is_zero() {
+            // Only an atom the vectors divide by needs a value other than zero: one they do
+            // not divide by (the closure of `H` and `L` on a system that declares `a1 − a2`,
+            // a search at `a1 = a2` in a space without `1/(a1 − a2)`) is a polynomial factor
+            // that its value, zero or not, evaluates.
+            if n > 0 && at.is_zero() {
                 let vars = d.vars();
                 let values: Vec<String> = parameters
                     .iter()

@@ -1261,6 +1261,31 @@ mod tests {
         assert_eq!(c.relations[0].poly.to_string(), "a W − X + 1");
     }
 
+    /// An atom that no generator divides by needs no value other than zero: the closure of
+    /// functions free of `1/(a − b)` on a system that declares `a − b` is found at `a = b`
+    /// (it was refused, "the denominator (a − b) is zero at a = 1, b = 1", for a denominator
+    /// nothing divided by), and so at the default values; one that divides by it still is.
+    #[test]
+    fn an_atom_no_generator_divides_by_may_vanish_at_the_fixed_values() {
+        let system = with_atoms(&[("P", "p_x + p_y"), ("X", "(a - b)*x"), ("T", "x/(a - b)")]);
+        let (a, b) = (system.var("a"), system.var("b"));
+        let equal = ClosureOptions::new(1)
+            .fix(a, Rational::from(3))
+            .fix(b, Rational::from(3));
+        let c = closure(&system, &["H", "P"], &equal).unwrap();
+        assert!(c.closes());
+        assert_eq!(c.render_bracket(0, 1), "0");
+        // (a − b) x is 0 at a = b: the relation X = 0 holds there.
+        let c = closure(&system, &["P", "X"], &equal).unwrap();
+        assert_eq!(c.relations.len(), 1);
+        assert_eq!(c.relations[0].poly.to_string(), "X");
+        assert!(closure(&system, &["H", "P"], &ClosureOptions::new(1)).is_ok());
+        let err = closure(&system, &["P", "T"], &equal).unwrap_err();
+        assert!(err
+            .to_string()
+            .starts_with("the denominator (a − b) is zero at a = 3, b = 3"));
+    }
+
     /// An atom whose polynomial vanishes at the given values has no value there: refused,
     /// with the values to change; other values work. When it vanishes at the default values,
     /// 1, the parameters in it take generic values instead.
