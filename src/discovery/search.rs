@@ -1291,7 +1291,7 @@ fn how_lifted(r: &SearchResult, for_every_value: usize) -> String {
 
 /// For what is not lifted: that it holds at the fixed values, and how to see it for every
 /// value (`--symbolic`, `SearchOptions::symbolic`) or at others (`--fix`,
-/// `SearchOptions::fixed`).
+/// `SearchOptions::fix`).
 fn unlifted_note(r: &SearchResult, vars: &Vars, caller: Caller) -> String {
     let names: Vec<&str> = r
         .parameters
@@ -1305,7 +1305,7 @@ fn unlifted_note(r: &SearchResult, vars: &Vars, caller: Caller) -> String {
             format!("compare with other values (`--fix {}`)", others.join(","))
         }
         Caller::Program if r.on.is_some() => format!(
-            "compare with other values (`SearchOptions::fixed`, such as {})",
+            "compare with other values (`SearchOptions::fix`, such as {})",
             others.join(", ").replace('=', " = ")
         ),
         Caller::CommandLine => format!(
@@ -1315,7 +1315,7 @@ fn unlifted_note(r: &SearchResult, vars: &Vars, caller: Caller) -> String {
         ),
         Caller::Program => format!(
             "keep them symbolic (`SearchOptions::symbolic`), or compare with other values \
-             (`SearchOptions::fixed`, such as {})",
+             (`SearchOptions::fix`, such as {})",
             others.join(", ").replace('=', " = ")
         ),
     };

@@ -4536,7 +4536,7 @@ fn a_programs_search_report_names_the_librarys_options() {
     assert!(
         text.contains(
             "keep them symbolic (SearchOptions::symbolic), or compare with other values \
-             (SearchOptions::fixed, such as a = 2, b = 3)."
+             (SearchOptions::fix, such as a = 2, b = 3)."
         ),
         "{text}"
     );
