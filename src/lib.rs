@@ -11,7 +11,8 @@
 //! adds functions, families such as `K_{m,n}` and claims in its own names
 //! ([`system_file::LoadedSystem::add_family`]), and whose claims, brackets, tables, ranks and
 //! family towers become [`report::Report`]s rendered by [`render::render`]. The examples
-//! `own_system`, `extend_file` and `discover` show each use.
+//! `own_system`, `extend_file` and `discover` show each use; `garnier` does all of it for a
+//! system of its own with parameters in a declared denominator.
 //!
 //! A program that only uses the library can depend on it with `default-features = false`
 //! (`superint = { path = "../superint", default-features = false }`, by path or git, as the
