@@ -627,6 +627,41 @@ pub struct Expressed {
 /// assert_eq!(found.poly.to_string(), "−ω² L");
 /// # Ok::<(), brackets::EngineError>(())
 /// ```
+///
+/// A target at fixed values of the parameters (a search's [`Integral::fixed`](crate::Integral::fixed),
+/// found there) is written in the generators taken at the same values
+/// ([`fix_parameters`](crate::search::fix_parameters)), with those values fixed in the
+/// options: in the generators as they are, with their parameters, the scalings weigh the
+/// parameters, which the target no longer has, and no polynomial is found.
+///
+/// ```
+/// use brackets::closure::{expressed_in, ClosureOptions};
+/// use brackets::search::fix_parameters;
+/// use brackets::{systems, NamedFunction};
+/// use trigpoly::Rational;
+///
+/// let rotor = systems::harmonic_rotor();
+/// let values = [(rotor.var("M"), Rational::from(2)), (rotor.var("omega"), Rational::from(3))];
+/// let mut options = ClosureOptions::new(2);
+/// for (v, x) in &values {
+///     options = options.fix(*v, x.clone());
+/// }
+/// // 4 G1² + G2² + ω² L², the Casimir of C10, at M = 2, ω = 3.
+/// let target = fix_parameters(&rotor.parse("4*G1^2 + G2^2 + omega^2*L^2")?, &values)?;
+/// let names = ["F1", "F2", "L", "G1", "G2"];
+/// let symbolic: Vec<NamedFunction> = names
+///     .iter()
+///     .map(|n| Ok(NamedFunction::new(n, n, rotor.get(n)?.clone())))
+///     .collect::<Result<_, brackets::EngineError>>()?;
+/// assert!(expressed_in(&rotor, &symbolic, &target, &options)?.is_none());
+/// let at_values: Vec<NamedFunction> = symbolic
+///     .iter()
+///     .map(|f| Ok(NamedFunction::new(&f.name, &f.display, fix_parameters(&f.expr, &values)?)))
+///     .collect::<Result<_, brackets::EngineError>>()?;
+/// let found = expressed_in(&rotor, &at_values, &target, &options)?.expect("(F1 − F2)²");
+/// assert_eq!(found.poly.to_string(), "F1² − 2 F1 F2 + F2²");
+/// # Ok::<(), brackets::EngineError>(())
+/// ```
 pub fn expressed_in(
     system: &System,
     generators: &[NamedFunction],
