@@ -104,6 +104,17 @@ struct Stated {
     symbolic: bool,
 }
 
+impl Stated {
+    fn new(integrals: usize, new: usize, known: &'static [&'static str], symbolic: bool) -> Self {
+        Stated {
+            integrals,
+            new,
+            known,
+            symbolic,
+        }
+    }
+}
+
 /// Runs one search from `H` alone, prints its report and writes each new integral in the
 /// functions of `garnier` that `stated` names; the error says what differs from `stated`.
 fn search_and_write(
@@ -181,65 +192,42 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         return Err("a claim of the Garnier system did not come out as stated".into());
     }
 
-    // From H alone, at a1 = 1, a2 = 2: degree ≤ 2 in the momenta, ≤ 4 in q1, q2. The
-    // constants, H and one new integral, −2 F2 at these values (F1 = 2H − F2).
+    // From H alone, each search stated by what it finds. Degree ≤ 2 in the momenta and ≤ 4 in
+    // q1, q2, or ≤ 4 and ≤ 8.
     let (a1, a2) = (bare.var("a1"), bare.var("a2"));
     let space = SearchSpace::default().momenta_degree(2).positions_degree(4);
-    let fixed = SearchOptions::new(space)
-        .fix(a1, Rational::from(1))
-        .fix(a2, Rational::from(2))
-        .new_only();
-    let stated = Stated {
-        integrals: 3,
-        new: 1,
-        known: &["F1", "F2", "H"],
-        symbolic: false,
+    let wider = SearchSpace::default().momenta_degree(4).positions_degree(8);
+    let at = |x: i64, y: i64, space| {
+        SearchOptions::new(space)
+            .fix(a1, x.into())
+            .fix(a2, y.into())
+            .new_only()
     };
-    search_and_write(&bare, &garnier, "the Garnier system", &fixed, &stated)?;
-
-    // Degree ≤ 4 in the momenta, ≤ 8 in q1, q2: the same one new, and the products H², H F2
-    // and F2².
-    let wider = SearchOptions::new(SearchSpace::default().momenta_degree(4).positions_degree(8))
-        .fix(a1, Rational::from(1))
-        .fix(a2, Rational::from(2))
-        .new_only();
-    let stated = Stated {
-        integrals: 6,
-        new: 1,
-        known: &["F1", "F2", "H"],
-        symbolic: false,
-    };
-    search_and_write(&bare, &garnier, "the Garnier system", &wider, &stated)?;
-
-    // At a1 = a2 the potential is central: F1 and F2 have no value there, and the rotation
-    // L is conserved, the one new integral (a denominator that nothing divides by may vanish
-    // at the values taken).
-    let isotropic = SearchOptions::new(space)
-        .fix(a1, Rational::from(3))
-        .fix(a2, Rational::from(3))
-        .new_only();
-    let stated = Stated {
-        integrals: 4,
-        new: 1,
-        known: &["L", "H"],
-        symbolic: false,
-    };
-    search_and_write(&bare, &garnier, "the Garnier system", &isotropic, &stated)?;
-
-    // The same space for every a1, a2, with coefficients of degree ≤ 1 in them and one power
-    // of 1/(a1 − a2): the constants (1, a1, a2, 1/(a1 − a2), a2/(a1 − a2)), H and
-    // H/(a1 − a2), and one new integral, 2 F2.
-    let symbolic = SearchOptions::new(space.parameters_degree(1).denominators_degree(1))
-        .symbolic(a1)
-        .symbolic(a2)
-        .new_only();
-    let stated = Stated {
-        integrals: 8,
-        new: 1,
-        known: &["F1", "F2", "H"],
-        symbolic: true,
-    };
-    search_and_write(&bare, &garnier, "the Garnier system", &symbolic, &stated)?;
+    let integrals = &["F1", "F2", "H"];
+    let searches = [
+        // At a1 = 1, a2 = 2: the constants, H and one new integral, −2 F2 at these values
+        // (F1 = 2H − F2).
+        (at(1, 2, space), Stated::new(3, 1, integrals, false)),
+        // Wider: the same one new, and the products H², H F2 and F2².
+        (at(1, 2, wider), Stated::new(6, 1, integrals, false)),
+        // At a1 = a2 the potential is central: F1 and F2 have no value there, and the
+        // rotation L is conserved, the one new integral (a denominator that nothing divides
+        // by may vanish at the values taken).
+        (at(3, 3, space), Stated::new(4, 1, &["L", "H"], false)),
+        // For every a1, a2, with coefficients of degree ≤ 1 in them and one power of
+        // 1/(a1 − a2): the constants (1, a1, a2, 1/(a1 − a2), a2/(a1 − a2)), H and
+        // H/(a1 − a2), and one new integral, 2 F2.
+        (
+            SearchOptions::new(space.parameters_degree(1).denominators_degree(1))
+                .symbolic(a1)
+                .symbolic(a2)
+                .new_only(),
+            Stated::new(8, 1, integrals, true),
+        ),
+    ];
+    for (options, stated) in &searches {
+        search_and_write(&bare, &garnier, "the Garnier system", options, stated)?;
+    }
 
     // The algebra of F1, F2 and H: every bracket zero, and F1 + F2 = 2H found, not told.
     let names = ["F1", "F2", "H"];
