@@ -771,3 +771,55 @@ fn a_closure_with_its_table_lifted_says_it_holds_for_every_value() {
         "{out}"
     );
 }
+
+/// At values where a declared denominator vanishes, a search takes what divides by nothing
+/// there: the Neumann system at `a1 = a2` (Uhlenbeck's `F3` defined, `F1` and `F2` not) finds
+/// `L3`, the rotation that equal `a1, a2` add. A Hamiltonian that divides by `a1 − a2` has no
+/// value there and is refused, even where the term it divides leaves no bracket: `|x|²/(a1 −
+/// a2)`, a Casimir's, and `1/(a − b)`, a constant's, whose brackets are zero, so that no image
+/// of the linear algebra divides by the denominator (both were searched as if `H` had a
+/// value), on the command line and in the library.
+#[test]
+fn denominators_search_at_values_where_one_vanishes_refuses_a_hamiltonian_that_divides_by_it() {
+    let neumann = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("systems/neumann.toml");
+    let neumann = neumann.to_str().unwrap();
+    let equal = ["--fix", "a1=2,a2=2,a3=5", "--denominators-degree", "0"];
+    let found = superint_ok(&[&["search", neumann, "--new-only"][..], &equal].concat());
+    assert!(found.contains("I2 = L3"), "{found}");
+    assert!(found.contains("2 claims: 2 proved, 0 refuted"), "{found}");
+    let text = std::fs::read_to_string(neumann).unwrap();
+    let h = "hamiltonian = \"(L1^2 + L2^2 + L3^2)/2 + (a1*x1^2 + a2*x2^2 + a3*x3^2)/2";
+    let casimir = text.replacen(h, &format!("{h} + (x1^2 + x2^2 + x3^2)/(a1 - a2)"), 1);
+    assert_ne!(casimir, text);
+    let f = scratch_text("denominators-vanishing", "casimir.toml", &casimir);
+    let err = superint_refused(&[&["search", f.to_str().unwrap()][..], &equal].concat());
+    assert!(
+        err.contains("the denominator (a1 − a2) is zero at a1 = 2, a2 = 2"),
+        "{err}"
+    );
+    // Other values: searched.
+    let other = ["--fix", "a1=2,a2=3,a3=5", "--denominators-degree", "0"];
+    superint_ok(&[&["search", f.to_str().unwrap()][..], &other].concat());
+
+    let text = "name = \"constant\"\n\
+                hamiltonian = \"(p_x^2 + p_y^2)/2 + 1/(a - b)\"\n\
+                [phase_space]\n\
+                coordinates = [\"x\", \"y\"]\n\
+                parameters = [\"a\", \"b\"]\n\
+                denominators = [\"a - b\"]\n";
+    let file = load_str("constant.toml", text, &LimitsOverride::default()).unwrap();
+    let system = file.system();
+    let space = SearchSpace::default().denominators_degree(0);
+    let at = |a: i64, b: i64| {
+        SearchOptions::new(space)
+            .fix(system.var("a"), Rational::from(a))
+            .fix(system.var("b"), Rational::from(b))
+    };
+    let err = search(system, &at(1, 1)).unwrap_err();
+    assert!(
+        err.to_string()
+            .starts_with("the denominator (a − b) is zero at a = 1, b = 1"),
+        "{err}"
+    );
+    assert!(search(system, &at(1, 2)).is_ok());
+}

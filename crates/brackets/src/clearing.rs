@@ -14,6 +14,66 @@ use trigpoly::{Expr, GaussianRational, Rational, ReducedRadical, Var};
 use crate::search::fix_parameters;
 use crate::EngineError;
 
+/// Refuses an atom that one of `exprs` divides by (holds to a negative power) whose polynomial
+/// vanishes at the fixed values: what [`Clearing::new`] refuses among its vectors, for what
+/// enters them without being one, a search's `H` (`H + 1/(a1 − a2)` has the brackets of `H`,
+/// but no value at `a1 = a2`) or a condition.
+pub(crate) fn refuse_division_by_zero<'a>(
+    atoms: &[(Var, Expr)],
+    parameters: &[(Var, Rational)],
+    exprs: impl Iterator<Item = &'a Expr>,
+) -> Result<(), EngineError> {
+    let exprs: Vec<&Expr> = exprs.collect();
+    for ((v, d), n) in atoms.iter().zip(inverse_powers(atoms, &exprs)) {
+        atom_at_values(*v, d, n, parameters)?;
+    }
+    Ok(())
+}
+
+/// For each of `symbols` (atoms or radicals), the highest power of its inverse among `exprs`,
+/// 0 where none holds it to a negative power.
+fn inverse_powers(symbols: &[(Var, Expr)], exprs: &[&Expr]) -> Vec<i64> {
+    symbols
+        .iter()
+        .map(|(v, _)| {
+            exprs
+                .iter()
+                .map(|e| -e.low_degree(*v).unwrap_or(0))
+                .fold(0, i64::max)
+        })
+        .collect()
+}
+
+/// The polynomial `d` of the atom `v` at the fixed values, refused where it is zero and
+/// something divides by it (`n`, the highest power of `1/d`, above 0).
+fn atom_at_values(
+    v: Var,
+    d: &Expr,
+    n: i64,
+    parameters: &[(Var, Rational)],
+) -> Result<Expr, EngineError> {
+    let at = fix_parameters(d, parameters)?;
+    // Only an atom divided by needs a value other than zero: one that nothing divides by (the
+    // closure of `H` and `L` on a system that declares `a1 − a2`, a search at `a1 = a2` in a
+    // space without `1/(a1 − a2)`) is a polynomial factor that its value, zero or not,
+    // evaluates.
+    if n > 0 && at.is_zero() {
+        let vars = d.vars();
+        let values: Vec<String> = parameters
+            .iter()
+            .filter(|(p, _)| d.contains(*p))
+            .map(|(p, x)| format!("{} = {x}", vars.variable(*p).unicode()))
+            .collect();
+        return Err(EngineError::Invalid(format!(
+            "the denominator {} is zero at {}, the values the linear algebra takes: give \
+             other values (the options' `fix`; on the command line, --fix)",
+            vars.variable(v).unicode(),
+            values.join(", ")
+        )));
+    }
+    Ok(at)
+}
+
 /// The injective linear map the linear algebra takes its vectors through on a system with
 /// denominator atoms: `e ↦ (Π v_i^{N_i} · e)(v_i = D_i)`, each `N_i` at least the highest power
 /// of `1/D_i` among the vectors, so that every image is a polynomial. It is multiplication by
@@ -52,44 +112,17 @@ impl Clearing {
         if atoms.is_empty() && radicals.is_empty() {
             return Ok(None);
         }
-        let mut powers = vec![0i64; atoms.len()];
-        let mut radical_powers = vec![0i64; radicals.len()];
-        for e in vectors {
-            for ((v, _), n) in atoms.iter().zip(powers.iter_mut()) {
-                *n = (*n).max(-e.low_degree(*v).unwrap_or(0));
-            }
-            for ((r, _), m) in radicals.iter().zip(radical_powers.iter_mut()) {
-                *m = (*m).max(-e.low_degree(*r).unwrap_or(0));
-            }
-        }
+        let vectors: Vec<&Expr> = vectors.collect();
         let radicals = radicals
             .iter()
-            .zip(radical_powers)
+            .zip(inverse_powers(radicals, &vectors))
             .map(|((r, radicand), m)| Ok((*r, fix_parameters(radicand, parameters)?, m)))
             .collect::<Result<Vec<_>, EngineError>>()?;
-        let mut out = Vec::with_capacity(atoms.len());
-        for ((v, d), n) in atoms.iter().zip(powers) {
-            let at = fix_parameters(d, parameters)?;
-            // Only an atom the vectors divide by needs a value other than zero: one they do
-            // not divide by (the closure of `H` and `L` on a system that declares `a1 − a2`,
-            // a search at `a1 = a2` in a space without `1/(a1 − a2)`) is a polynomial factor
-            // that its value, zero or not, evaluates.
-            if n > 0 && at.is_zero() {
-                let vars = d.vars();
-                let values: Vec<String> = parameters
-                    .iter()
-                    .filter(|(p, _)| d.contains(*p))
-                    .map(|(p, x)| format!("{} = {x}", vars.variable(*p).unicode()))
-                    .collect();
-                return Err(EngineError::Invalid(format!(
-                    "the denominator {} is zero at {}, the values the linear algebra takes: \
-                     give other values (the options' `fix`; on the command line, --fix)",
-                    vars.variable(*v).unicode(),
-                    values.join(", ")
-                )));
-            }
-            out.push((*v, at, n));
-        }
+        let out = atoms
+            .iter()
+            .zip(inverse_powers(atoms, &vectors))
+            .map(|((v, d), n)| Ok((*v, atom_at_values(*v, d, n, parameters)?, n)))
+            .collect::<Result<Vec<_>, EngineError>>()?;
         let real = out.iter().all(|(_, d, _)| d.is_real());
         Ok(Some(Clearing {
             radicals,

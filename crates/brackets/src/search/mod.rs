@@ -127,7 +127,7 @@ use rayon::prelude::*;
 use trigpoly::{Expr, MonomialIndex, Rational, Var, VarKind};
 
 use crate::claim::Condition;
-use crate::clearing::Clearing;
+use crate::clearing::{refuse_division_by_zero, Clearing};
 use crate::error::EngineError;
 use crate::modular::{self, SparseVec};
 use crate::scaling::{Lifter, Scaling};
@@ -314,6 +314,16 @@ fn fixed_search_problem(
         &options.fixed,
         system.space().denominator_atoms().iter(),
     );
+    // `H` and the condition enter every image, but a term of them that divides by an atom may
+    // leave none (a constant's bracket is zero): refused where that atom vanishes too.
+    let condition_values = condition
+        .into_iter()
+        .flat_map(|c| c.subs().iter().map(|s| &s.1));
+    refuse_division_by_zero(
+        system.space().denominator_atoms(),
+        &parameters,
+        std::iter::once(system.hamiltonian()).chain(condition_values),
+    )?;
     let fixed = fixed_hamiltonian_and_condition(system, options, &parameters)?;
     let on_level = match &options.on {
         Some(level) => Some(OnLevel::new(level, system, &parameters)?),
