@@ -197,12 +197,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let (a1, a2) = (bare.var("a1"), bare.var("a2"));
     let space = SearchSpace::default().momenta_degree(2).positions_degree(4);
     let wider = SearchSpace::default().momenta_degree(4).positions_degree(8);
-    let at = |x: i64, y: i64, space| {
-        SearchOptions::new(space)
-            .fix(a1, x.into())
-            .fix(a2, y.into())
-            .new_only()
-    };
+    let at = |x: i64, y: i64, space| SearchOptions::new(space).fix(a1, x).fix(a2, y).new_only();
     let integrals = &["F1", "F2", "H"];
     let searches = [
         // At a1 = 1, a2 = 2: the constants, H and one new integral, −2 F2 at these values

@@ -125,11 +125,22 @@ impl ClosureOptions {
         self
     }
 
-    /// With a parameter fixed to a value for the linear algebra.
+    /// With a parameter fixed to a value for the linear algebra: a [`Rational`], or an
+    /// integer.
+    ///
+    /// ```
+    /// use brackets::{systems, ClosureOptions};
+    /// use trigpoly::Rational;
+    ///
+    /// let rotor = systems::harmonic_rotor();
+    /// let omega = rotor.vars().lookup("omega").unwrap();
+    /// let options = ClosureOptions::new(2).fix(omega, 3);
+    /// assert_eq!(options.fixed, [(omega, Rational::from(3))]);
+    /// ```
     #[must_use]
-    pub fn fix(mut self, v: Var, value: Rational) -> Self {
+    pub fn fix(mut self, v: Var, value: impl Into<Rational>) -> Self {
         self.fixed.retain(|f| f.0 != v);
-        self.fixed.push((v, value));
+        self.fixed.push((v, value.into()));
         self
     }
 

@@ -310,11 +310,23 @@ impl SearchOptions {
         self
     }
 
-    /// With a parameter fixed to a value.
+    /// With a parameter fixed to a value: a [`Rational`], or an integer.
+    ///
+    /// ```
+    /// use brackets::{systems, SearchOptions, SearchSpace};
+    /// use trigpoly::Rational;
+    ///
+    /// let rotor = systems::harmonic_rotor();
+    /// let omega = rotor.vars().lookup("omega").unwrap();
+    /// let options = SearchOptions::new(SearchSpace::default()).fix(omega, 2);
+    /// assert_eq!(options.fixed, [(omega, Rational::from(2))]);
+    /// let options = options.fix(omega, Rational::new(1, 3));
+    /// assert_eq!(options.fixed, [(omega, Rational::new(1, 3))]);
+    /// ```
     #[must_use]
-    pub fn fix(mut self, v: Var, value: Rational) -> Self {
+    pub fn fix(mut self, v: Var, value: impl Into<Rational>) -> Self {
         self.fixed.retain(|f| f.0 != v);
-        self.fixed.push((v, value));
+        self.fixed.push((v, value.into()));
         self
     }
 
