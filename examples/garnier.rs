@@ -15,7 +15,6 @@
 //!
 //! Run with `cargo run --example garnier`.
 
-use superint::brackets::search::fix_parameters;
 use superint::prelude::*;
 
 /// The claims: `(id, claim, expected proved)`, each read as a system file's `[[claim]]` is.

@@ -130,7 +130,35 @@ pub struct SystemFilesDoctests;
 /// assert_eq!(errors[0].kind, ErrorKind::Limit);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
+///
+/// A search at fixed values of the parameters finds its integrals there
+/// ([`Integral::fixed`](brackets::Integral::fixed)): a known function is compared with them at
+/// the same values, those of [`SearchResult::parameters`](brackets::SearchResult::parameters),
+/// by [`fix_parameters`](brackets::search::fix_parameters):
+///
+/// ```
+/// use superint::prelude::*;
+///
+/// let text = r#"
+/// hamiltonian = "(p_x^2 + w*x^2)/2"
+/// [phase_space]
+/// coordinates = ["x"]
+/// parameters = ["w"]
+/// "#;
+/// let file = load_system_text("oscillator.toml", text, &LimitsOverride::default())?;
+/// let system = file.system();
+/// let space = SearchSpace::default().momenta_degree(2).positions_degree(2);
+/// let found = search(system, &SearchOptions::new(space).fix(system.var("w"), 4))?;
+/// let energy = &found.basis[1];
+/// assert_eq!(energy.fixed.to_string(), "p_x² + 4x²");
+/// // H as written holds w; at w = 4 it is half the integral found.
+/// let h = fix_parameters(system.hamiltonian(), &found.parameters)?;
+/// assert_ne!(&energy.fixed, system.hamiltonian());
+/// assert_eq!(energy.fixed, h.scale_rational(&Rational::from(2)));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub mod prelude {
+    pub use brackets::search::fix_parameters;
     pub use brackets::{
         check_tower, closure, closure_of, eigen_proof, eigen_proof_of, expressed_in, rank, rank_on,
         search, systems, BracketTable, CanonicalPair, Claim, Closure, ClosureBracket,
