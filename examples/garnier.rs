@@ -8,10 +8,13 @@
 //! `F1 + F2 = 2H`; their false neighbours (the `L²` term's sign turned, the wrong power of
 //! `a1 − a2`, the form with `q_i² (q1² + q2²)` and `+L²/(a_i − a_j)`) are refuted. Then the
 //! integrals are found from `H` alone, at `a1 = 1, a2 = 2` (to degree 4 in the momenta: one
-//! new, the rest products) and for every `a1, a2`, and each new one is written in the `F_i`
-//! and `H`; a closure finds `F1 + F2 = 2H` by itself.
+//! new, the rest products), at `a1 = a2` (where the `F_i` have no value and `L` is
+//! conserved) and for every `a1, a2`, and each new one is written in the `F_i` and `H` (in `L`
+//! and `H` at `a1 = a2`); a closure finds `F1 + F2 = 2H` by itself. `{L, H}` is printed as the
+//! command line's `bracket` shows it, `q1 q2 (a1 − a2)`, by [`Expr::factored`].
 //!
-//! The program exits with an error when a claim does not come out as stated (CI runs it).
+//! The program exits with an error when a claim or a search does not come out as stated (CI
+//! runs it).
 //!
 //! Run with `cargo run --example garnier`.
 
@@ -95,23 +98,13 @@ fn with_integrals(bare: &System) -> Result<LoadedSystem, FileError> {
 }
 
 /// What a search is stated to find: how many integrals, how many of them new, and each new
-/// one written in the functions `known` (for every `a1, a2` when `symbolic`).
+/// one written in the functions `known` as `written` (for every `a1, a2` when `symbolic`).
 struct Stated {
     integrals: usize,
     new: usize,
     known: &'static [&'static str],
+    written: &'static str,
     symbolic: bool,
-}
-
-impl Stated {
-    fn new(integrals: usize, new: usize, known: &'static [&'static str], symbolic: bool) -> Self {
-        Stated {
-            integrals,
-            new,
-            known,
-            symbolic,
-        }
-    }
 }
 
 /// Runs one search from `H` alone, prints its report and writes each new integral in the
@@ -165,12 +158,23 @@ fn search_and_write(
         };
         let written = expressed_in(system, generators, target, &writing)?;
         match written {
-            Some(w) if w.symbolic || !stated.symbolic => {
-                println!("  the new integral {} = {}", integral.expr(), w.poly)
+            Some(w) if w.poly.to_string() == stated.written && (w.symbolic || !stated.symbolic) => {
+                let values: Vec<String> = (found.parameters.iter())
+                    .map(|(v, x)| format!("{} = {x}", system.vars().variable(*v).name()))
+                    .collect();
+                let at = match stated.symbolic {
+                    true => String::new(),
+                    false => format!(" at {}", values.join(", ")),
+                };
+                println!("  the new integral {} = {}{at}", integral.expr(), w.poly)
             }
             _ => {
                 let names = stated.known.join(", ");
-                return Err(format!("{title}: {target} is not written in {names}").into());
+                return Err(format!(
+                    "{title}: {target} is not written in {names} as {}",
+                    stated.written
+                )
+                .into());
             }
         }
     }
@@ -191,6 +195,16 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         return Err("a claim of the Garnier system did not come out as stated".into());
     }
 
+    // {L, H} as a program computes it, expanded, and with the factor its terms share taken
+    // out, as the command line's `bracket` prints it under the expanded form.
+    let system = garnier.system();
+    let rotation = system.bracket(system.get("L")?, system.hamiltonian())?;
+    let factored = rotation.factored().ok_or("{L, H} has no common factor")?;
+    println!("{{L, H}} = {rotation}\n       = {factored}");
+    if factored.to_string() != "q1 q2 (a1 − a2)" {
+        return Err(format!("{{L, H}} = {factored}, where q1 q2 (a1 − a2) was stated").into());
+    }
+
     // From H alone, each search stated by what it finds. Degree ≤ 2 in the momenta and ≤ 4 in
     // q1, q2, or ≤ 4 and ≤ 8.
     let (a1, a2) = (bare.var("a1"), bare.var("a2"));
@@ -201,13 +215,40 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let searches = [
         // At a1 = 1, a2 = 2: the constants, H and one new integral, −2 F2 at these values
         // (F1 = 2H − F2).
-        (at(1, 2, space), Stated::new(3, 1, integrals, false)),
+        (
+            at(1, 2, space),
+            Stated {
+                integrals: 3,
+                new: 1,
+                known: integrals,
+                written: "−2 F2",
+                symbolic: false,
+            },
+        ),
         // Wider: the same one new, and the products H², H F2 and F2².
-        (at(1, 2, wider), Stated::new(6, 1, integrals, false)),
+        (
+            at(1, 2, wider),
+            Stated {
+                integrals: 6,
+                new: 1,
+                known: integrals,
+                written: "−2 F2",
+                symbolic: false,
+            },
+        ),
         // At a1 = a2 the potential is central: F1 and F2 have no value there, and the
         // rotation L is conserved, the one new integral (a denominator that nothing divides
         // by may vanish at the values taken).
-        (at(3, 3, space), Stated::new(4, 1, &["L", "H"], false)),
+        (
+            at(3, 3, space),
+            Stated {
+                integrals: 4,
+                new: 1,
+                known: &["L", "H"],
+                written: "L",
+                symbolic: false,
+            },
+        ),
         // For every a1, a2, with coefficients of degree ≤ 1 in them and one power of
         // 1/(a1 − a2): the constants (1, a1, a2, 1/(a1 − a2), a2/(a1 − a2)), H and
         // H/(a1 − a2), and one new integral, 2 F2.
@@ -216,7 +257,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 .symbolic(a1)
                 .symbolic(a2)
                 .new_only(),
-            Stated::new(8, 1, integrals, true),
+            Stated {
+                integrals: 8,
+                new: 1,
+                known: integrals,
+                written: "2 F2",
+                symbolic: true,
+            },
         ),
     ];
     for (options, stated) in &searches {
