@@ -787,6 +787,10 @@ fn denominators_search_at_values_where_one_vanishes_refuses_a_hamiltonian_that_d
     let found = superint_ok(&[&["search", neumann, "--new-only"][..], &equal].concat());
     assert!(found.contains("I2 = L3"), "{found}");
     assert!(found.contains("2 claims: 2 proved, 0 refuted"), "{found}");
+    // A known integral that divides by a1 − a2, a constant whose bracket is zero: refused too.
+    let known = ["search", neumann, "--new-only", "--known", "1/(a1 - a2)"];
+    let err = superint_refused(&[&known[..], &equal].concat());
+    assert!(err.contains("the denominator (a1 − a2) is zero"), "{err}");
     let text = std::fs::read_to_string(neumann).unwrap();
     let h = "hamiltonian = \"(L1^2 + L2^2 + L3^2)/2 + (a1*x1^2 + a2*x2^2 + a3*x3^2)/2";
     let casimir = text.replacen(h, &format!("{h} + (x1^2 + x2^2 + x3^2)/(a1 - a2)"), 1);
