@@ -6,7 +6,9 @@ use std::path::{Path, PathBuf};
 
 use super::input::load_system;
 use anyhow::{anyhow, bail, Context};
-use brackets::search::{BesideLevelSet, SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
+use brackets::search::{
+    BesideLevelSet, SearchOptions, SearchSpace, DEFAULT_MAX_MINOR, DEFAULT_MAX_PRODUCTS,
+};
 use brackets::{EngineError, System};
 use clap::Args;
 use superint::discovery::{
@@ -133,6 +135,13 @@ pub struct SearchArgs {
     /// sets the parameter.
     #[arg(long, value_name = "PARAM", conflicts_with_all = ["symbolic", "on", "new_only"])]
     find_values: Option<String>,
+    /// With --find-values, stop with an error at a block of the equations whose minor has more
+    /// than N rows (default 250: its determinant takes some 10 s at 250 rows, its time growing about as the fourth power of N).
+    #[arg(long, allow_negative_numbers = true,
+          value_name = "N", requires = "find_values",
+          default_value_t = DEFAULT_MAX_MINOR as u64,
+          value_parser = super::Quoting(super::at_least_one))]
+    max_minor: u64,
     /// Parameters kept symbolic, such as A,B: the coefficients of the integrals are then
     /// polynomials in them (of total degree at most --parameters-degree), and what is found
     /// holds for every value of them.
@@ -758,6 +767,7 @@ fn search(a: &SearchArgs, subject: &Subject, format: Format) -> anyhow::Result<R
         options.on = Some(level_set(subject, on, &options.fixed)?);
     }
     if let Some(names) = &a.find_values {
+        options.max_minor = usize::try_from(a.max_minor).unwrap_or(usize::MAX);
         return find_values(a, subject, format, &options, names);
     }
     options.new_only = a.new_only;

@@ -384,6 +384,9 @@ pub(crate) enum Limit {
     /// The monomials in a closure's generators (`ClosureOptions::max_monomials`,
     /// `--max-monomials`), which no file sets.
     ClosureMonomials,
+    /// The rows of a minor whose determinant `--find-values` computes
+    /// (`SearchOptions::max_minor`, `--max-minor`), which no file sets.
+    MinorRows,
     /// A limit of the engine's own this crate does not know yet, which no setting it knows
     /// raises: no hint.
     OfOptions,
@@ -535,6 +538,7 @@ impl Limit {
             EngineLimit::Ring(kind) => Limit::of_kind(kind),
             EngineLimit::SearchProducts => Limit::SearchProducts,
             EngineLimit::ClosureMonomials => Limit::ClosureMonomials,
+            EngineLimit::MinorRows => Limit::MinorRows,
             // An option's limit this crate does not know yet.
             _ => Limit::OfOptions,
         })
@@ -567,6 +571,10 @@ impl Limit {
             Limit::ClosureMonomials => format!(
                 "if the machine has the time, raise the limit with {}",
                 settings.raising_option("--max-monomials N", "ClosureOptions::max_monomials")
+            ),
+            Limit::MinorRows => format!(
+                "if the machine has the time, raise the limit with {}",
+                settings.raising_option("--max-minor N", "SearchOptions::max_minor")
             ),
             Limit::Degree(power) if power > settings.degree_ceiling() => {
                 let most = settings.degree_ceiling();

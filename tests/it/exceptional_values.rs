@@ -166,6 +166,27 @@ fn what_find_values_does_not_take_is_refused() {
     );
 }
 
+/// A block whose minor passes `--max-minor` (the largest of Hénon–Heiles' blocks at
+/// A = B = 1 has 30 rows) stops with exit code 2, the limit's message and the hint naming
+/// the flag; the default lets it through.
+#[test]
+fn a_minor_past_max_minor_is_refused_with_the_flag_named() {
+    let args = [&HENON_HEILES_VALUES[..], &["4", "--max-minor"]].concat();
+    let refused = superint_refused(&[&args[..], &["29"]].concat());
+    assert!(
+        refused.contains("more than 29, the limit of the rows whose determinant"),
+        "{refused}"
+    );
+    assert!(
+        refused.contains("hint: if the machine has the time, raise the limit with --max-minor N"),
+        "{refused}"
+    );
+    let at_thirty = normalize(&superint_ok(&[&args[..], &["30"]].concat()));
+    assert!(at_thirty.contains("the largest has 30 rows"), "{at_thirty}");
+    let without = superint_refused(&["search", HENON_HEILES, "--max-minor", "30"]);
+    assert!(without.contains("--find-values"), "{without}");
+}
+
 #[test]
 fn the_heavy_top_has_one_more_integral_at_the_kovalevskaya_ratio_i1_equal_i2_equal_2_i3_alone() {
     // H with k = 1/I3 (a negative power of I3 is refused): k = 2 is Kovalevskaya's ratio and

@@ -153,6 +153,10 @@ pub enum EngineLimit {
     /// [`ClosureOptions::max_monomials`](crate::ClosureOptions): the monomials in the
     /// generators (and the symbolic parameters) that a closure counts before it expands any.
     ClosureMonomials,
+    /// [`SearchOptions::max_minor`](crate::SearchOptions::max_minor): the rows of a block's
+    /// minor whose determinant in the parameter
+    /// [`exceptional_values`](crate::search::exceptional_values) computes.
+    MinorRows,
 }
 
 /// A triple of phase variables for which declared brackets break the Jacobi identity.
@@ -222,8 +226,10 @@ impl EngineError {
     /// the ring's, [`EngineLimit::Ring`] with the [`LimitKind`] of an algebraic refusal
     /// ([`AlgebraError::limit`]), of a text's reading ([`ParseCause::limit`]), of a closure's
     /// products together or a search space's unknowns (both the term limit); or a search's
-    /// products ([`EngineLimit::SearchProducts`]) or a closure's monomials
-    /// ([`EngineLimit::ClosureMonomials`]), each its option's. Every other refusal, the input
+    /// products ([`EngineLimit::SearchProducts`]), a closure's monomials
+    /// ([`EngineLimit::ClosureMonomials`]) or the rows of a minor whose determinant
+    /// [`exceptional_values`](crate::search::exceptional_values) computes
+    /// ([`EngineLimit::MinorRows`]), each its option's. Every other refusal, the input
     /// wrong whatever the limits, has none.
     ///
     /// ```
@@ -345,7 +351,11 @@ mod tests {
     /// A limit of the engine's own is the one it names, and says its message as it is.
     #[test]
     fn a_limit_of_the_engines_own_is_the_one_it_names() {
-        for which in [EngineLimit::SearchProducts, EngineLimit::ClosureMonomials] {
+        for which in [
+            EngineLimit::SearchProducts,
+            EngineLimit::ClosureMonomials,
+            EngineLimit::MinorRows,
+        ] {
             let e = EngineError::PastLimit {
                 which,
                 limit: 9,

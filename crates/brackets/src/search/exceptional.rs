@@ -50,16 +50,12 @@ use num_traits::{One, Signed, Zero};
 use rustc_hash::FxHashMap;
 use trigpoly::{Expr, Rational, Var, VarKind};
 
-use crate::error::EngineError;
+use crate::error::{EngineError, EngineLimit};
 use crate::system::System;
 use crate::univariate::IntPoly;
 
 use super::problem::{blocks, canonical};
 use super::{fixed_search_problem, search, FixedSearch, SearchOptions, SearchResult};
-
-/// The largest block whose determinant is computed: past it the search stops with a message
-/// (a determinant of this size takes some seconds per prime).
-pub const MAX_MINOR: usize = 400;
 
 /// What [`exceptional_values`] found.
 #[derive(Debug)]
@@ -98,7 +94,8 @@ pub struct ExceptionalValue {
 /// generic value, the other parameters at `options`' fixed values (1 by default). Refused:
 /// a parameter that is not one of `H`'s, or is fixed, kept symbolic or set by the condition;
 /// parameters kept symbolic; a level set; a parameter in a declared denominator or radical;
-/// a block past [`MAX_MINOR`].
+/// and, as a limit ([`EngineLimit::MinorRows`]), a block whose minor has more rows than
+/// [`SearchOptions::max_minor`].
 pub fn exceptional_values(
     system: &System,
     options: &SearchOptions,
@@ -129,12 +126,18 @@ pub fn exceptional_values(
     let mut largest_minor = (0, 0);
     for block in blocks(&matrix.columns, matrix.rows) {
         let minor = matrix.generic_minor(&block);
-        if minor.len() > MAX_MINOR {
-            return Err(EngineError::Invalid(format!(
-                "a block of the equations has rank {} past {MAX_MINOR}, the largest whose \
-                 determinant in the parameter is computed: take a smaller space",
-                minor.len()
-            )));
+        if minor.len() > options.max_minor {
+            let limit = options.max_minor;
+            return Err(EngineError::PastLimit {
+                which: EngineLimit::MinorRows,
+                limit,
+                message: format!(
+                    "a block of the equations has a minor of {} rows, more than {limit}, the \
+                     limit of the rows whose determinant in the parameter is computed: search \
+                     a smaller space, or raise the limit",
+                    minor.len()
+                ),
+            });
         }
         let det = determinant(&minor);
         largest_minor = largest_minor.max((minor.len(), det.degree().unwrap_or(0)));
@@ -641,6 +644,31 @@ mod tests {
             assert_eq!(v.found.basis.len(), 3);
             assert!(v.found.basis.iter().all(|i| i.proved_fixed));
         }
+    }
+
+    /// A block whose minor has more rows than `SearchOptions::max_minor` stops the search at
+    /// that limit, `EngineLimit::MinorRows`, before its determinant is computed; at as many
+    /// rows as the largest minor's it runs.
+    #[test]
+    fn a_minor_past_max_minor_stops_at_that_limit() {
+        let system = planar(
+            "(p_x^2 + p_y^2)/2 + (A*x^2 + B*y^2)/2 + x^2*y + C*y^3",
+            &["A", "B", "C"],
+        );
+        let c = system.var("C");
+        let rows = exceptional_values(&system, &space(2, 4), c)
+            .unwrap()
+            .largest_minor
+            .0;
+        let at_most = |n| exceptional_values(&system, &space(2, 4).max_minor(n), c);
+        let err = at_most(rows - 1).unwrap_err();
+        assert_eq!(err.limit(), Some(EngineLimit::MinorRows), "{err}");
+        assert!(
+            matches!(&err, EngineError::PastLimit { limit, .. } if *limit == rows - 1),
+            "{err:?}"
+        );
+        assert!(err.to_string().contains("raise the limit"), "{err}");
+        assert_eq!(at_most(rows).unwrap().largest_minor.0, rows);
     }
 
     #[test]

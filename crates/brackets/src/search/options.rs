@@ -267,6 +267,12 @@ pub struct SearchOptions {
     /// [`EngineError::PastLimit`](crate::EngineError::PastLimit) of
     /// [`EngineLimit::SearchProducts`](crate::EngineLimit::SearchProducts).
     pub max_products: usize,
+    /// The most rows of a block's generic minor whose determinant
+    /// [`exceptional_values`](super::exceptional_values) computes before it stops with an error
+    /// ([`DEFAULT_MAX_MINOR`] unless set): a limit,
+    /// [`EngineError::PastLimit`](crate::EngineError::PastLimit) of
+    /// [`EngineLimit::MinorRows`](crate::EngineLimit::MinorRows).
+    pub max_minor: usize,
     /// The level set the search is restricted to ([`SearchOptions::on`]): the integrals
     /// found are those whose bracket with `H` vanishes there, in normal form modulo its
     /// polynomial. It takes no condition and no parameters kept symbolic; with `new_only`,
@@ -278,6 +284,11 @@ pub struct SearchOptions {
 /// The most products of integrals `--new-only` forms unless told otherwise: some seconds'
 /// work (the 1:1 resonance up to degree 12 forms some 165 000).
 pub const DEFAULT_MAX_PRODUCTS: usize = 1_000_000;
+
+/// The most rows of a minor whose determinant in the parameter
+/// [`exceptional_values`](super::exceptional_values) computes unless told otherwise: some
+/// seconds' work (release: 206 rows take 4.6 s, 302 rows 22 s, the time growing about as the fourth power of the rows; 250 rows some 10 s).
+pub const DEFAULT_MAX_MINOR: usize = 250;
 
 impl SearchOptions {
     /// Searches a space with parameters fixed to 1 and no condition.
@@ -291,6 +302,7 @@ impl SearchOptions {
             new_only: false,
             exact_complement: false,
             max_products: DEFAULT_MAX_PRODUCTS,
+            max_minor: DEFAULT_MAX_MINOR,
             on: None,
         }
     }
@@ -357,6 +369,21 @@ impl SearchOptions {
     #[must_use]
     pub fn max_products(mut self, n: usize) -> Self {
         self.max_products = n;
+        self
+    }
+
+    /// With at most `n` rows in a minor whose determinant
+    /// [`exceptional_values`](super::exceptional_values) computes.
+    ///
+    /// ```
+    /// use brackets::search::{SearchOptions, SearchSpace, DEFAULT_MAX_MINOR};
+    ///
+    /// assert_eq!(SearchOptions::new(SearchSpace::default()).max_minor, DEFAULT_MAX_MINOR);
+    /// assert_eq!(SearchOptions::new(SearchSpace::default()).max_minor(30).max_minor, 30);
+    /// ```
+    #[must_use]
+    pub fn max_minor(mut self, n: usize) -> Self {
+        self.max_minor = n;
         self
     }
 
