@@ -79,7 +79,8 @@ pub fn exceptional_values_report(
             listed(&roots)
         )));
     }
-    entries.push(Entry::Text(match &found.unexamined {
+    let unexamined = found.unexamined_in(vars);
+    entries.push(Entry::Text(match &unexamined {
         Some(p) => format!(
             "Other values may lie among the roots of `{p}`, which are not rational: not examined."
         ),
@@ -97,7 +98,7 @@ pub fn exceptional_values_report(
                     .map(|(k, v)| value(k + 1, &v.value, &v.found))
                     .collect(),
                 found.spurious.iter().map(ToString::to_string).collect(),
-                found.unexamined.as_ref().map(|p| p.render(Style::Ascii)),
+                unexamined.as_ref().map(|p| p.render(Style::Ascii)),
                 found.largest_minor,
             ),
         )));

@@ -48,7 +48,7 @@ use std::collections::BTreeMap;
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 use rustc_hash::FxHashMap;
-use trigpoly::{Expr, Rational, Var, VarKind};
+use trigpoly::{Expr, Rational, Var, VarKind, Vars};
 
 use crate::error::{EngineError, EngineLimit};
 use crate::system::System;
@@ -72,13 +72,20 @@ pub struct ExceptionalValues {
     /// The rational roots of the determinants where the search found no more integrals.
     pub spurious: Vec<Rational>,
     /// The lcm of the determinants' square-free parts with their rational linear factors
-    /// divided out, as a polynomial in the parameter, when it is not constant: its roots, not
-    /// rational, were not examined.
-    pub unexamined: Option<Expr>,
-    /// The same polynomial, a constant when none is left.
-    pub unexamined_factor: IntPoly,
+    /// divided out, a constant when none is left: its roots, not rational, were not examined
+    /// ([`ExceptionalValues::unexamined_in`] writes it in the parameter).
+    pub unexamined: IntPoly,
     /// The largest block's minor: its size and the degree of its determinant.
     pub largest_minor: (usize, usize),
+}
+
+impl ExceptionalValues {
+    /// [`ExceptionalValues::unexamined`] as a polynomial in the parameter, in `vars` (the
+    /// system's), when it is not constant: `None` when every root was rational.
+    pub fn unexamined_in(&self, vars: &Vars) -> Option<Expr> {
+        (self.unexamined.degree().unwrap_or(0) > 0)
+            .then(|| polynomial_in(vars, self.parameter, &self.unexamined))
+    }
 }
 
 /// One exceptional value and the ordinary search there.
@@ -176,17 +183,13 @@ pub fn exceptional_values(
             spurious.push(value);
         }
     }
-    let unexamined = (rest.degree().unwrap_or(0) > 0)
-        .then(|| polynomial_in(system, parameter, &rest))
-        .transpose()?;
     Ok(ExceptionalValues {
         parameter,
         generic_value,
         generic,
         values,
         spurious,
-        unexamined,
-        unexamined_factor: rest,
+        unexamined: rest,
         largest_minor,
     })
 }
@@ -249,8 +252,7 @@ fn refuse(system: &System, options: &SearchOptions, parameter: Var) -> Result<()
 }
 
 /// `Σ a_i t^i` as an expression in the parameter `t`.
-fn polynomial_in(system: &System, t: Var, p: &IntPoly) -> Result<Expr, EngineError> {
-    let vars = system.vars();
+fn polynomial_in(vars: &Vars, t: Var, p: &IntPoly) -> Expr {
     let mut out = Expr::zero(vars);
     let mut power = Expr::constant(vars, 1.into());
     let var = Expr::var(vars, t);
@@ -258,7 +260,7 @@ fn polynomial_in(system: &System, t: Var, p: &IntPoly) -> Result<Expr, EngineErr
         out = &out + &(&power * &Rational::from(c.clone()));
         power = &power * &var;
     }
-    Ok(out)
+    out
 }
 
 /// The equations with the parameter `t` kept: each column an unknown, each entry the
@@ -681,7 +683,8 @@ mod tests {
         let system = planar("(p_x^2 + p_y^2)/2 + (x^2 + a*y^2)/2", &["a"]);
         let found = exceptional_values(&system, &space(3, 3), system.var("a")).unwrap();
         assert_eq!(values_of(&found), ["0", "1/9", "1/4", "1", "4", "9"]);
-        assert!(found.unexamined.is_none());
+        assert_eq!(found.unexamined.degree(), Some(0));
+        assert!(found.unexamined_in(system.vars()).is_none());
         assert!(!found.spurious.is_empty());
         let generic = found.generic.basis.len();
         let more: Vec<usize> = (found.values.iter())
@@ -712,8 +715,17 @@ mod tests {
         // Isotropic where a² − 1 = 1, at a = ±√2: no rational value, a² − 2 left unexamined.
         let system = planar("(p_x^2 + p_y^2)/2 + (x^2 + (a^2 - 1)*y^2)/2", &["a"]);
         let found = exceptional_values(&system, &space(2, 2), system.var("a")).unwrap();
-        assert!(found.unexamined.is_some());
-        assert!(IntPoly::from_i64(&[-2, 0, 1]).divides(&found.unexamined_factor));
+        assert!(IntPoly::from_i64(&[-2, 0, 1]).divides(&found.unexamined));
+        // Written in a: the same polynomial, its value at a = 3 the IntPoly's.
+        let written = found.unexamined_in(system.vars()).unwrap();
+        let three = Expr::constant(system.vars(), 3.into());
+        let at_three = written.subst(system.var("a"), &three).unwrap();
+        let value: BigInt =
+            (found.unexamined.coeffs().iter().rev()).fold(BigInt::zero(), |acc, c| acc * 3 + c);
+        assert_eq!(
+            at_three,
+            &Expr::constant(system.vars(), 1.into()) * &Rational::from(value)
+        );
         assert_eq!(values_of(&found), ["-1", "1"]);
     }
 
