@@ -334,14 +334,15 @@ impl PolyMatrix {
     fn generic_minor(&self, block: &[usize]) -> Vec<Vec<Vec<BigInt>>> {
         let p = PRIMES_BELOW;
         let point = RANDOM_POINT % p;
-        let mut local: BTreeMap<usize, usize> = BTreeMap::new();
-        for &j in block {
-            for (row, _) in &self.columns[j] {
-                let n = local.len();
-                local.entry(*row).or_insert(n);
-            }
-        }
-        let rows: Vec<usize> = local.keys().copied().collect();
+        // The block's rows, increasing, and each one's place among them: `dense[local[r]]` is
+        // row `rows[local[r]] = r`, by construction.
+        let mut rows: Vec<usize> = (block.iter())
+            .flat_map(|&j| self.columns[j].iter().map(|(row, _)| *row))
+            .collect();
+        rows.sort_unstable();
+        rows.dedup();
+        let local: FxHashMap<usize, usize> =
+            rows.iter().enumerate().map(|(i, &r)| (r, i)).collect();
         let mut dense = vec![vec![0_u64; block.len()]; rows.len()];
         for (k, &j) in block.iter().enumerate() {
             for (row, poly) in &self.columns[j] {
@@ -671,6 +672,30 @@ mod tests {
         );
         assert!(err.to_string().contains("raise the limit"), "{err}");
         assert_eq!(at_most(rows).unwrap().largest_minor.0, rows);
+    }
+
+    /// The generic minor is taken from the rows its elimination picked, whatever the order in
+    /// which the block's columns meet its rows: here column 0 meets row 4 before column 1
+    /// meets row 1, and the rank is 2 (rows 0 and 1 of columns 0 and 1), so the minor's
+    /// determinant is no zero polynomial. Numbering the rows by first meeting while reading
+    /// them back in increasing order took rows 0 and 1 for the pivots of rows 0 and 4, a
+    /// singular minor.
+    #[test]
+    fn the_generic_minor_is_nonsingular_whatever_order_its_rows_are_met_in() {
+        let one = || vec![BigInt::one()];
+        let matrix = PolyMatrix {
+            columns: vec![
+                vec![(0, one()), (4, one())],
+                vec![(1, one())],
+                vec![(0, one()), (1, one()), (4, one())],
+            ],
+            rows: 5,
+        };
+        let block = [0, 1, 2];
+        assert_eq!(blocks(&matrix.columns, matrix.rows), [block]);
+        let minor = matrix.generic_minor(&block);
+        assert_eq!(minor.len(), 2);
+        assert!(!determinant(&minor).is_zero());
     }
 
     #[test]
