@@ -737,13 +737,14 @@ fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
         false,
         &a.limits.settings(),
     )?;
-    let report = subject.warned(search(a, &subject, job.output.format))?;
+    let report = subject.warned(search(a, &subject, &job.output))?;
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(report.all_proved())
 }
 
-/// The search of `subject` that `a` asks for, as a report to print in `format`.
-fn search(a: &SearchArgs, subject: &Subject, format: Format) -> anyhow::Result<Report> {
+/// The search of `subject` that `a` asks for, as a report to print as `output` says.
+fn search(a: &SearchArgs, subject: &Subject, output: &Output) -> anyhow::Result<Report> {
+    let format = output.format;
     a.refuse_degrees_without_variables(subject)?;
     let mut space = SearchSpace::default()
         .momenta_degree(a.momenta_degree.unwrap_or(DEFAULT_DEGREE))
@@ -768,7 +769,7 @@ fn search(a: &SearchArgs, subject: &Subject, format: Format) -> anyhow::Result<R
     }
     if let Some(names) = &a.find_values {
         options.max_minor = usize::try_from(a.max_minor).unwrap_or(usize::MAX);
-        return find_values(a, subject, format, &options, names);
+        return find_values(a, subject, output, &options, names);
     }
     options.new_only = a.new_only;
     options.exact_complement = a.exact_complement;
@@ -824,14 +825,15 @@ fn search(a: &SearchArgs, subject: &Subject, format: Format) -> anyhow::Result<R
 
 /// The values of the parameter `names` (one) with more integrals, the search at a generic
 /// value and at each of them as `--when` shows it (with `a`'s own `--when` after), as a
-/// report to print in `format`.
+/// report to print as `output` says.
 fn find_values(
     a: &SearchArgs,
     subject: &Subject,
-    format: Format,
+    output: &Output,
     options: &SearchOptions,
     names: &str,
 ) -> anyhow::Result<Report> {
+    let (format, whole) = (output.format, output.options.shown_monomials.is_none());
     let start = std::time::Instant::now();
     let parameters = parse_symbolic(subject.system(), names)
         .map_err(|e| list_refused("--find-values", names, e))?;
@@ -878,7 +880,7 @@ fn find_values(
         &found,
         searches,
         Caller::CommandLine,
-        format == Format::Json,
+        (format == Format::Json, whole),
     );
     report.seconds = start.elapsed().as_secs_f64();
     Ok(subject.tag(report))

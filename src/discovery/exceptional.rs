@@ -14,14 +14,17 @@ use crate::system_file::Caller;
 /// The report of what [`brackets::search::exceptional_values`] `found` for `name`, `system`:
 /// a section that says which values have more integrals (and, with `facts`, the JSON's data),
 /// then the sections of `searches`, the reports of the search at the generic value and at each
-/// exceptional value in order, numbered on and titled by their value.
+/// exceptional value in order, numbered on and titled by their value. The polynomial whose
+/// roots were not examined is shown whole with `whole` (`--full-expressions`), else, when
+/// long, in part ([`trigpoly::Poly::brief_excerpt`]), its degree said either way; the JSON's
+/// data hold it whole.
 pub fn exceptional_values_report(
     name: &str,
     system: &System,
     found: &ExceptionalValues,
     searches: Vec<Report>,
     caller: Caller,
-    facts: bool,
+    (facts, whole): (bool, bool),
 ) -> Report {
     let vars = system.vars();
     // A value as the prose prints numbers, with a minus sign.
@@ -82,7 +85,8 @@ pub fn exceptional_values_report(
     let unexamined = found.unexamined_in(vars);
     entries.push(Entry::Text(match &unexamined {
         Some(p) => format!(
-            "Other values may lie among the roots of `{p}`, which are not rational: not examined."
+            "Other values may lie among the roots of {}, which are not rational: not examined.",
+            unexamined_shown(p, found.unexamined.degree().unwrap_or(0), whole, caller)
         ),
         None => format!("Every root of the determinants is rational: no other value of `{t}` has more integrals."),
     }));
@@ -138,5 +142,25 @@ pub fn exceptional_values_report(
         summary: SummaryKind::Searches,
         seconds,
         caller,
+    }
+}
+
+/// The polynomial `p` of degree `degree` whose roots were not examined, as the prose says it:
+/// whole with `whole` or when short (`` `21C² − 12C + 272` (degree 2) ``), else its first
+/// terms and how to show it all (`` `4618108208206766407680a³⁴ + … (a polynomial of 35
+/// terms)` (degree 34; --full-expressions shows it whole) ``).
+fn unexamined_shown(p: &trigpoly::Expr, degree: usize, whole: bool, caller: Caller) -> String {
+    let all = p.to_string();
+    let shown = if whole {
+        all.clone()
+    } else {
+        p.brief_excerpt()
+    };
+    match shown == all {
+        true => format!("`{all}` (degree {degree})"),
+        false => format!(
+            "`{shown}` (degree {degree}; {} shows it whole)",
+            caller.names("--full-expressions", "RenderOptions::shown_monomials(None)")
+        ),
     }
 }

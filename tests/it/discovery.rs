@@ -1407,8 +1407,8 @@ fn henon_heiles_values_of_c_with_a_quartic_integral_at_b_sixteen_found_from_h_al
             "For a generic C (searched at C = 7, no root): 3 integrals (section 2).",
             "More integrals at C = 2, 4 integrals (section 4) and at C = 16/3, 4 integrals \
              (section 6).",
-            "Other values may lie among the roots of 21C² − 12C + 272, which are not rational: \
-             not examined.",
+            "Other values may lie among the roots of 21C² − 12C + 272 (degree 2), which are not \
+             rational: not examined.",
             "I3 = 18 p_x² p_y² + 9 p_y⁴ + 12x³ p_x p_y + 36x²y p_y² + 18x² p_y²",
             "11 claims: 11 proved, 0 refuted",
         ],

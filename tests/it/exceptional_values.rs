@@ -123,11 +123,68 @@ fn an_irrational_value_is_reported_with_its_polynomial_not_claimed() {
         "2",
     ]));
     assert!(text.contains("More integrals at a = −1"), "{text}");
+    // Short: whole, with its degree.
     assert!(
-        text.contains("Other values may lie among the roots of"),
+        text.contains(
+            "Other values may lie among the roots of 2a⁸ − 23a⁶ + 92a⁴ − 153a² + 90 (degree 8)"
+        ),
         "{text}"
     );
     assert!(text.contains("not examined"), "{text}");
+}
+
+/// A long polynomial whose roots were not examined (the anisotropic oscillator's at degree 6,
+/// of degree 34, coefficients of 20 digits and more) is shown by its first terms with its
+/// degree and the flag that shows it whole, in text, Markdown and LaTeX; with
+/// --full-expressions, and in JSON, whole.
+#[test]
+fn a_long_unexamined_polynomial_is_shown_in_part_with_its_degree() {
+    let file = scratch_text(
+        "exceptional-values",
+        "anisotropic.toml",
+        "name = \"oscillator\"\nhamiltonian = \"(p_x^2 + p_y^2)/2 + (x^2 + a*y^2)/2\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\"]\n",
+    );
+    let at = |degree: &str, extra: &[&str]| {
+        let args = [
+            &["search", file.to_str().unwrap(), "--find-values", "a"][..],
+            &["--momenta-degree", degree, "--positions-degree", degree],
+            extra,
+        ]
+        .concat();
+        normalize(&superint_ok(&args))
+    };
+    let whole = at("6", &["--full-expressions"]);
+    let json = superint_json(&[
+        "search",
+        file.to_str().unwrap(),
+        "--find-values",
+        "a",
+        "--momenta-degree",
+        "6",
+        "--positions-degree",
+        "6",
+    ]);
+    let ascii = json["exceptional_values"][0]["unexamined"]
+        .as_str()
+        .expect("the polynomial")
+        .to_string();
+    // Whole: each of its 35 terms, down to the constant the JSON ends with.
+    let last = ascii.rsplit(' ').next().unwrap();
+    assert!(ascii.contains("a^34"), "{ascii}");
+    assert!(whole.contains(&format!("{last} (degree 34)")), "{whole}");
+    for format in ["text", "markdown", "latex"] {
+        let part = at("6", &["--format", format]);
+        // LaTeX writes the size as text in math and -- as -{}-.
+        let size = match format {
+            "latex" => "\\dots (a\\ \\text{polynomial of}\\ 35\\ \\text{terms})",
+            _ => "+ … (a polynomial of 35 terms)",
+        };
+        for piece in [size, "(degree 34; -", "full-expressions shows it whole)"] {
+            assert!(part.contains(piece), "{format}: {piece}: {part}");
+        }
+        assert!(!part.contains(last), "{format}: {part}");
+    }
 }
 
 #[test]
