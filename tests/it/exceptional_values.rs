@@ -105,15 +105,20 @@ fn henon_heiles_exceptional_values_in_markdown_and_latex() {
     compile_within(&latex, 1.0);
 }
 
+/// A scratch system file `name`: `(p_x² + p_y²)/2 + potential` in `x, y` with the
+/// parameter `a`.
+fn oscillator(name: &str, potential: &str) -> std::path::PathBuf {
+    let text = format!(
+        "name = \"oscillator\"\nhamiltonian = \"(p_x^2 + p_y^2)/2 + {potential}\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\"]\n"
+    );
+    scratch_text("exceptional-values", name, &text)
+}
+
 #[test]
 fn an_irrational_value_is_reported_with_its_polynomial_not_claimed() {
     // Isotropic where a² = 2: the value √2 is not rational.
-    let file = scratch_text(
-        "exceptional-values",
-        "irrational.toml",
-        "name = \"oscillator\"\nhamiltonian = \"(p_x^2 + p_y^2)/2 + (x^2 + (a^2 - 1)*y^2)/2\"\n\
-         [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\"]\n",
-    );
+    let file = oscillator("irrational.toml", "(x^2 + (a^2 - 1)*y^2)/2");
     let text = normalize(&superint_ok(&[
         "search",
         file.to_str().unwrap(),
@@ -139,23 +144,8 @@ fn an_irrational_value_is_reported_with_its_polynomial_not_claimed() {
 /// --full-expressions, and in JSON, whole.
 #[test]
 fn a_long_unexamined_polynomial_is_shown_in_part_with_its_degree() {
-    let file = scratch_text(
-        "exceptional-values",
-        "anisotropic.toml",
-        "name = \"oscillator\"\nhamiltonian = \"(p_x^2 + p_y^2)/2 + (x^2 + a*y^2)/2\"\n\
-         [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\"]\n",
-    );
-    let at = |degree: &str, extra: &[&str]| {
-        let args = [
-            &["search", file.to_str().unwrap(), "--find-values", "a"][..],
-            &["--momenta-degree", degree, "--positions-degree", degree],
-            extra,
-        ]
-        .concat();
-        normalize(&superint_ok(&args))
-    };
-    let whole = at("6", &["--full-expressions"]);
-    let json = superint_json(&[
+    let file = oscillator("anisotropic.toml", "(x^2 + a*y^2)/2");
+    let degree_six = [
         "search",
         file.to_str().unwrap(),
         "--find-values",
@@ -164,7 +154,10 @@ fn a_long_unexamined_polynomial_is_shown_in_part_with_its_degree() {
         "6",
         "--positions-degree",
         "6",
-    ]);
+    ];
+    let at = |extra: &[&str]| normalize(&superint_ok(&[&degree_six[..], extra].concat()));
+    let whole = at(&["--full-expressions"]);
+    let json = superint_json(&degree_six);
     let ascii = json["exceptional_values"][0]["unexamined"]
         .as_str()
         .expect("the polynomial")
@@ -174,7 +167,7 @@ fn a_long_unexamined_polynomial_is_shown_in_part_with_its_degree() {
     assert!(ascii.contains("a^34"), "{ascii}");
     assert!(whole.contains(&format!("{last} (degree 34)")), "{whole}");
     for format in ["text", "markdown", "latex"] {
-        let part = at("6", &["--format", format]);
+        let part = at(&["--format", format]);
         // LaTeX writes the size as text in math and -- as -{}-.
         let size = match format {
             "latex" => "\\dots (a\\ \\text{polynomial of}\\ 35\\ \\text{terms})",
