@@ -82,6 +82,13 @@ pub fn exceptional_values_report(
             listed(&roots)
         )));
     }
+    if found.no_value_at_zero {
+        entries.push(Entry::Text(format!(
+            "`{t} = 0` is no value: H, with a negative power of `{t}`, has none there (each \
+             equation was multiplied by the power of `{t}` that makes it a polynomial, which \
+             changes its solutions at no other value)."
+        )));
+    }
     let unexamined = found.unexamined_in(vars);
     entries.push(Entry::Text(match &unexamined {
         Some(p) => format!(

@@ -199,6 +199,10 @@ const COMMANDS: &[(&str, &str)] = &[
          --momenta-degree 4 --positions-degree 6 --trig-degree 0",
     ),
     (
+        "heavy-top-values",
+        "superint search systems/heavy-top.toml --find-values I3 --poisson-degree 4",
+    ),
+    (
         "kepler",
         "superint search systems/kepler.toml --momenta-degree 2 --positions-degree 2 \
          --trig-degree 1 --laurent",
@@ -1411,6 +1415,26 @@ fn henon_heiles_values_of_c_with_a_quartic_integral_at_b_sixteen_found_from_h_al
              rational: not examined.",
             "I3 = 18 p_x² p_y² + 9 p_y⁴ + 12x³ p_x p_y + 36x²y p_y² + 18x² p_y²",
             "11 claims: 11 proved, 0 refuted",
+        ],
+    );
+}
+
+/// The values of `I3` of the heavy top with more integrals of degree 4, from `H`, where `I3`
+/// is a negative power (results.md §9): Kovalevskaya's `I3 = 1/2` (one more, `K`) and the
+/// spherical `I3 = 1` (ten more); `I3 = 0`, where `H` has no value, no candidate.
+#[test]
+fn the_heavy_top_has_kovalevskaya_s_integral_at_i3_one_half_found_from_h_alone() {
+    expect(
+        "heavy-top-values",
+        &[
+            "For a generic I3 (searched at I3 = 7, no root): 10 integrals (section 2).",
+            "More integrals at I3 = 1/2, 11 integrals (section 4) and at I3 = 1, 20 integrals \
+             (section 6).",
+            "Roots of the determinants where the search finds no more integrals: I3 = 1/4, \
+             I3 = 3/2, I3 = 2 and I3 = 4.",
+            "I3 = 0 is no value: H, with a negative power of I3, has none there",
+            "J11 = M1⁴ + 2 M1² M2² + 4c M1² γ1 + 8c M1 M2 γ2 + M2⁴ − 4c M2² γ1 − 4c² γ3²",
+            "= −4c² Γ + K",
         ],
     );
 }

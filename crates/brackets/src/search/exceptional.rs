@@ -3,16 +3,18 @@
 //! exactly), each confirmed by the ordinary search at `t0`.
 //!
 //! With `t` kept as a variable and the other parameters fixed, the equations `{Σ c_j φ_j, H} = 0`
-//! are `M(t) c = 0`, the entries of `M` polynomials in `t`. Let `r` be its generic rank: the
-//! values where the kernel is larger are those where every `r×r` minor vanishes. `M` splits into
-//! blocks (unknowns sharing no equation); in each, the rank and an `r×r` submatrix `S`
-//! nonsingular at a random point are found modulo a prime, and `det S(t)` is computed exactly:
-//! modulo primes whose product passes a bound on its coefficients (the product of the rows'
-//! sums of coefficients), each time from its values at `deg + 1` points, then by the Chinese
+//! are `M(t) c = 0`, the entries of `M` polynomials in `t` (a row with negative powers of `t`, from
+//! a negative power in `H`, multiplied by `t^k` for its largest negative exponent `−k`, which
+//! changes the kernel at no `t ≠ 0`; `t = 0`, where `H` has no value, is then no candidate). Let
+//! `r` be its generic rank: the values where the kernel is larger are those where every `r×r` minor
+//! vanishes. `M` splits into blocks (unknowns sharing no equation); in each, the rank and an `r×r`
+//! submatrix `S` nonsingular at a random point are found modulo a prime, and `det S(t)` is computed
+//! exactly: modulo primes whose product passes a bound on its coefficients (the product of the
+//! rows' sums of coefficients), each time from its values at `deg + 1` points, then by the Chinese
 //! remainder theorem. Every exceptional value is a root of `det S` of some block. Its rational
 //! roots are found exactly ([`IntPoly::rational_roots`]), and each is kept only if the ordinary
-//! search at that value finds more integrals than at a generic value (one that is no root);
-//! the irrational and complex roots are not examined, and the factor holding them is reported
+//! search at that value finds more integrals than at a generic value (one that is no root); the
+//! irrational and complex roots are not examined, and the factor holding them is reported
 //! ([`ExceptionalValues::unexamined`]).
 //!
 //! The generic rank is the rank at a random point modulo a prime (a larger one would need that
@@ -77,6 +79,9 @@ pub struct ExceptionalValues {
     pub unexamined: IntPoly,
     /// The largest block's minor: its size and the degree of its determinant.
     pub largest_minor: (usize, usize),
+    /// Whether `H` holds a negative power of the parameter: then `0`, where `H` has no value,
+    /// was no candidate, whether or not a determinant vanishes there.
+    pub no_value_at_zero: bool,
 }
 
 impl ExceptionalValues {
@@ -100,7 +105,8 @@ pub struct ExceptionalValue {
 /// The values of `parameter` at which the space of `options` holds more integrals than at a
 /// generic value, the other parameters at `options`' fixed values (1 by default). Refused:
 /// a parameter that is not one of `H`'s, or is fixed, kept symbolic or set by the condition;
-/// parameters kept symbolic; a level set; a parameter in a declared denominator or radical;
+/// parameters kept symbolic; a level set; a parameter in a declared denominator or radical
+/// (a negative power of it in `H` is taken, and `0` is then no candidate);
 /// and, as a limit ([`EngineLimit::MinorRows`]), a block whose minor has more rows than
 /// [`SearchOptions::max_minor`].
 pub fn exceptional_values(
@@ -161,6 +167,12 @@ pub fn exceptional_values(
             rest = rest.lcm(&left);
         }
     }
+    // With a negative power of `t` in H, `t = 0` is no value of H: not a candidate.
+    let no_value_at_zero =
+        (system.hamiltonian().terms().into_iter()).any(|term| term.exponent(parameter) < 0);
+    if no_value_at_zero {
+        roots.retain(|r| !r.is_zero());
+    }
     roots.sort();
     roots.dedup();
     let generic_value = (1..)
@@ -191,6 +203,7 @@ pub fn exceptional_values(
         spurious,
         unexamined: rest,
         largest_minor,
+        no_value_at_zero,
     })
 }
 
@@ -220,15 +233,6 @@ fn refuse(system: &System, options: &SearchOptions, parameter: Var) -> Result<()
     {
         Some(format!(
             "a condition that sets {name}, the parameter solved for"
-        ))
-    } else if system
-        .hamiltonian()
-        .terms()
-        .into_iter()
-        .any(|term| term.exponent(parameter) < 0)
-    {
-        Some(format!(
-            "a negative power of {name} in H (name its inverse a parameter instead)"
         ))
     } else if system
         .space()
@@ -265,6 +269,8 @@ fn polynomial_in(vars: &Vars, t: Var, p: &IntPoly) -> Expr {
 
 /// The equations with the parameter `t` kept: each column an unknown, each entry the
 /// polynomial in `t`, integer coefficients, each row scaled by the lcm of its denominators.
+/// A row with negative powers of `t` (a negative power in H) is multiplied by `t^k`, `k` the
+/// largest negative exponent in it, which changes the kernel at no `t ≠ 0`.
 struct PolyMatrix {
     /// By column, the rows and entries (coefficients lowest degree first).
     columns: Vec<Vec<(usize, Vec<BigInt>)>>,
@@ -276,14 +282,14 @@ impl PolyMatrix {
     /// monomial other than `t`'s with a canonical `e^{ik·θ}`.
     fn new(images: &[Expr], t: Var, angles: &[Var]) -> Self {
         let mut row_of: FxHashMap<(Vec<i64>, usize), usize> = FxHashMap::default();
-        let mut entries: Vec<BTreeMap<usize, BTreeMap<usize, Rational>>> = Vec::new();
+        let mut entries: Vec<BTreeMap<usize, BTreeMap<i64, Rational>>> = Vec::new();
         for image in images {
-            let mut column: BTreeMap<usize, BTreeMap<usize, Rational>> = BTreeMap::new();
+            let mut column: BTreeMap<usize, BTreeMap<i64, Rational>> = BTreeMap::new();
             for term in image.terms() {
                 if !canonical(angles.iter().map(|v| term.exponent(*v))) {
                     continue;
                 }
-                let power = usize::try_from(term.exponent(t)).expect("t is a polynomial's");
+                let power = term.exponent(t);
                 let mut key = term.exponents();
                 key[t.index()] = 0;
                 let c = term.coeff();
@@ -299,26 +305,32 @@ impl PolyMatrix {
             entries.push(column);
         }
         let rows = row_of.len();
-        // Each row's entries made integers: times the lcm of the row's denominators.
+        // Each row's entries made integers, times the lcm of the row's denominators, and
+        // polynomials, times `t^k` for its largest negative exponent `−k`.
         let mut lcm = vec![BigInt::one(); rows];
+        let mut lowest = vec![0_i64; rows];
         for column in &entries {
             for (row, poly) in column {
-                for x in poly.values() {
+                for (power, x) in poly {
                     lcm[*row] = num_integer::Integer::lcm(&lcm[*row], &x.denom().to_bigint());
+                    lowest[*row] = lowest[*row].min(*power);
                 }
             }
         }
+        let shifted = |row: usize, power: i64| {
+            usize::try_from(power - lowest[row]).expect("no power below the row's lowest")
+        };
         let columns = entries
             .into_iter()
             .map(|column| {
                 column
                     .into_iter()
                     .filter_map(|(row, poly)| {
-                        let degree = poly.keys().max().copied().unwrap_or(0);
+                        let degree = poly.keys().max().map_or(0, |&i| shifted(row, i));
                         let mut coeffs = vec![BigInt::zero(); degree + 1];
                         for (i, x) in poly {
                             let scaled = x * &Rational::from(lcm[row].clone());
-                            coeffs[i] = scaled.numer().to_bigint();
+                            coeffs[shifted(row, i)] = scaled.numer().to_bigint();
                         }
                         let p = IntPoly::new(coeffs);
                         (!p.is_zero()).then(|| (row, p.coeffs().to_vec()))
@@ -778,12 +790,25 @@ mod tests {
     }
 
     #[test]
-    fn a_parameter_with_a_negative_power_in_h_is_refused_not_a_panic() {
+    fn oscillators_with_frequency_squares_one_and_one_over_a_are_exceptional_at_a_equal_to_one_alone(
+    ) {
+        // A negative power of a in H: each row made a polynomial, a = 0 no candidate.
         let system = planar("(p_x^2 + p_y^2)/2 + (x^2 + y^2/a)/2", &["a"]);
-        let refused = exceptional_values(&system, &space(2, 2), system.var("a"))
-            .unwrap_err()
-            .to_string();
-        assert!(refused.contains("a negative power of a in H"), "{refused}");
+        let found = exceptional_values(&system, &space(2, 2), system.var("a")).unwrap();
+        assert!(found.no_value_at_zero);
+        assert_eq!(values_of(&found), ["1"]);
+        assert!(found.spurious.iter().all(|r| !r.is_zero()));
+        let at_one = &found.values[0].found;
+        assert!(at_one.basis.len() > found.generic.basis.len());
+        assert!(at_one
+            .basis
+            .iter()
+            .any(|i| i.expr().to_string() == "x p_y − y p_x"));
+        // With a itself, a = 0 is one (y free there, p_y an integral) and no negative power.
+        let direct = planar("(p_x^2 + p_y^2)/2 + (x^2 + a*y^2)/2", &["a"]);
+        let found = exceptional_values(&direct, &space(2, 2), direct.var("a")).unwrap();
+        assert!(!found.no_value_at_zero);
+        assert_eq!(values_of(&found), ["0", "1"]);
     }
 
     #[test]
