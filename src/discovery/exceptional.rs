@@ -91,11 +91,21 @@ pub fn exceptional_values_report(
     }
     let unexamined = found.unexamined_in(vars);
     entries.push(Entry::Text(match &unexamined {
-        Some(p) => format!(
-            "Other values may lie among the roots of {}, which are not rational: not examined.",
-            unexamined_shown(p, found.unexamined.degree().unwrap_or(0), whole, caller)
-        ),
-        None => format!("Every root of the determinants is rational: no other value of `{t}` has more integrals."),
+        Some(p) => {
+            let shown = unexamined_shown(p, found.unexamined.degree().unwrap_or(0), whole, caller);
+            match found.unexamined.real_root_count() {
+                0 => format!(
+                    "The determinants' other roots, those of {shown}, are none of them real: no \
+                     other real value of `{t}` has more integrals in this space (the complex ones \
+                     were not examined)."
+                ),
+                real => format!(
+                    "Other values may lie among the roots of {shown}, which are not rational \
+                     ({real} of them real): not examined."
+                ),
+            }
+        }
+        None => format!("Every root of the determinants is rational: no other value of `{t}` has more integrals in this space."),
     }));
     if facts {
         let value = |k: usize, v: &trigpoly::Rational, r: &brackets::search::SearchResult| {

@@ -1390,7 +1390,8 @@ fn henon_heiles_values_of_c_with_a_second_quadratic_integral_found_from_h_alone(
              (section 6).",
             "Roots of the determinants where the search finds no more integrals: C = 2/15 and \
              C = 2/3.",
-            "Every root of the determinants is rational: no other value of C has more integrals.",
+            "Every root of the determinants is rational: no other value of C has more integrals in \
+             this space.",
             "I2 = 3 p_x p_y + x³ + 3xy² + 3xy",
             "I3 = 4x p_x p_y − 4y p_x² − 3 p_y² + x⁴ + 4x²y² − 2x²y − 12y³ − 3y²",
             // Each search's claims: 2 at the generic value, 3 at each value.
@@ -1411,8 +1412,9 @@ fn henon_heiles_values_of_c_with_a_quartic_integral_at_b_sixteen_found_from_h_al
             "For a generic C (searched at C = 7, no root): 3 integrals (section 2).",
             "More integrals at C = 2, 4 integrals (section 4) and at C = 16/3, 4 integrals \
              (section 6).",
-            "Other values may lie among the roots of 21C² − 12C + 272 (degree 2), which are not \
-             rational: not examined.",
+            "The determinants' other roots, those of 21C² − 12C + 272 (degree 2), are none of \
+             them real: no other real value of C has more integrals in this space (the complex \
+             ones were not examined).",
             "I3 = 18 p_x² p_y² + 9 p_y⁴ + 12x³ p_x p_y + 36x²y p_y² + 18x² p_y²",
             "11 claims: 11 proved, 0 refuted",
         ],

@@ -207,12 +207,7 @@ impl IntPoly {
             roots.push(Rational::zero());
             f = IntPoly(f.0[1..].to_vec());
         }
-        let mirrored = IntPoly(
-            f.0.iter()
-                .enumerate()
-                .map(|(i, c)| if i % 2 == 1 { -c } else { c.clone() })
-                .collect(),
-        );
+        let mirrored = f.mirrored();
         let mut intervals = Vec::new();
         for (sign, g) in [(1, &f), (-1, &mirrored)] {
             for found in g.positive_roots() {
@@ -244,6 +239,39 @@ impl IntPoly {
         }
         roots.sort();
         Ok((roots, rest))
+    }
+
+    /// The number of distinct real roots, rational or not, isolated on both half lines as
+    /// [`IntPoly::rational_roots`] isolates them (Descartes' rule of signs, exact).
+    ///
+    /// ```
+    /// use brackets::univariate::IntPoly;
+    /// // x³ − 2x = x(x² − 2): 0 and ±√2; 21x² − 12x + 272 has none, 2x² − 3x + 1 two.
+    /// assert_eq!(IntPoly::from_i64(&[0, -2, 0, 1]).real_root_count(), 3);
+    /// assert_eq!(IntPoly::from_i64(&[272, -12, 21]).real_root_count(), 0);
+    /// assert_eq!(IntPoly::from_i64(&[1, -3, 2]).real_root_count(), 2);
+    /// ```
+    pub fn real_root_count(&self) -> usize {
+        let mut f = self.square_free();
+        if f.degree().unwrap_or(0) == 0 {
+            return 0;
+        }
+        let at_zero = usize::from(f.0[0].is_zero());
+        if at_zero == 1 {
+            f = IntPoly(f.0[1..].to_vec());
+        }
+        at_zero + f.positive_roots().len() + f.mirrored().positive_roots().len()
+    }
+
+    /// `f(−x)`, whose positive roots are the negatives of `f`'s negative roots.
+    fn mirrored(&self) -> IntPoly {
+        IntPoly(
+            self.0
+                .iter()
+                .enumerate()
+                .map(|(i, c)| if i % 2 == 1 { -c } else { c.clone() })
+                .collect(),
+        )
     }
 
     /// The positive real roots of a square-free polynomial with `f(0) ≠ 0`: each a rational
