@@ -124,9 +124,74 @@ impl Fp {
 }
 
 fn bigint_mod(a: &BigInt) -> Fp {
-    let p = BigInt::from(PRIME);
-    let r = a.mod_floor(&p);
-    Fp(r.to_u64().expect("a residue below p fits in u64"))
+    Fp(big_mod(a, PRIME))
+}
+
+// Residues modulo any prime below 2⁶⁴, where a computation needs several primes (the
+// determinants of `search::exceptional`, by the Chinese remainder theorem); `Fp` is the
+// field of the one prime `PRIME`, with its faster reduction.
+
+/// `a` modulo the prime `p`, in `0..p`.
+pub(crate) fn big_mod(a: &BigInt, p: u64) -> u64 {
+    (a.mod_floor(&BigInt::from(p)))
+        .to_u64()
+        .expect("a residue below p fits in u64")
+}
+
+/// `a·b` modulo `p`.
+pub(crate) fn mul_mod(a: u64, b: u64, p: u64) -> u64 {
+    ((u128::from(a) * u128::from(b)) % u128::from(p)) as u64
+}
+
+/// `a^e` modulo `p`, by repeated squaring.
+fn pow_mod(mut a: u64, mut e: u64, p: u64) -> u64 {
+    let mut acc = 1;
+    while e > 0 {
+        if e & 1 == 1 {
+            acc = mul_mod(acc, a, p);
+        }
+        a = mul_mod(a, a, p);
+        e >>= 1;
+    }
+    acc
+}
+
+/// The largest prime below `n` (Miller–Rabin with the bases that decide every 64-bit number).
+pub(crate) fn previous_prime(n: u64) -> u64 {
+    (3..=n - 2)
+        .rev()
+        .step_by(2)
+        .find(|&m| is_prime(m))
+        .expect("a prime below n")
+}
+
+/// Whether `n` is prime.
+fn is_prime(n: u64) -> bool {
+    const BASES: [u64; 12] = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37];
+    if n < 2 {
+        return false;
+    }
+    if let Some(&b) = BASES.iter().find(|&&b| n.is_multiple_of(b)) {
+        return n == b;
+    }
+    let (mut d, mut s) = (n - 1, 0);
+    while d % 2 == 0 {
+        d /= 2;
+        s += 1;
+    }
+    BASES.iter().all(|&a| {
+        let mut x = pow_mod(a, d, n);
+        if x == 1 || x == n - 1 {
+            return true;
+        }
+        for _ in 1..s {
+            x = mul_mod(x, x, n);
+            if x == n - 1 {
+                return true;
+            }
+        }
+        false
+    })
 }
 
 /// `x mod p` for a product `x < p²` of residues, without a division: `2⁶² ≡ 57 (mod p)`, so
@@ -192,7 +257,7 @@ impl Field for Fp {
 /// u_{k+1} ≤ m`, so no product or sum passes `m < 2⁶⁴`. At the end `r_n = 1 ≡ t_n a`: the
 /// inverse is `u_n` where `t_n > 0` (`n` odd) and `m − u_n` where `t_n < 0`, and `0 < u_n <
 /// m` (`u_n ≤ m/r_{n−1} ≤ m/2` for `n ≥ 2`, `u₁ = 1`).
-fn inverse_mod(a: u64, m: u64) -> u64 {
+pub(crate) fn inverse_mod(a: u64, m: u64) -> u64 {
     debug_assert!(0 < a && a < m);
     let (mut r0, mut r1) = (m, a);
     let (mut u0, mut u1) = (0u64, 1u64);

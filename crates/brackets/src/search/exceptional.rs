@@ -53,6 +53,7 @@ use rustc_hash::FxHashMap;
 use trigpoly::{Expr, Rational, Var, VarKind, Vars};
 
 use crate::error::{EngineError, EngineLimit};
+use crate::modular::{big_mod, inverse_mod, mul_mod, previous_prime, PRIME};
 use crate::system::System;
 use crate::univariate::IntPoly;
 
@@ -344,7 +345,7 @@ impl PolyMatrix {
     /// A square submatrix of the block's columns of the block's generic rank, nonsingular at
     /// a random point modulo a prime: its rows (dense, entries polynomials in `t`).
     fn generic_minor(&self, block: &[usize]) -> Vec<Vec<Vec<BigInt>>> {
-        let p = PRIMES_BELOW;
+        let p = PRIME;
         let point = RANDOM_POINT % p;
         // The block's rows, increasing, and each one's place among them: `dense[local[r]]` is
         // row `rows[local[r]] = r`, by construction.
@@ -400,9 +401,6 @@ impl PolyMatrix {
 /// A fixed point in `F_p` standing for a random one (the golden ratio's 64 bits).
 const RANDOM_POINT: u64 = 0x9E37_79B9_7F4A_7C15;
 
-/// The largest prime below 2⁶²; the others are found below it.
-const PRIMES_BELOW: u64 = (1 << 62) - 57;
-
 /// The determinant of the square matrix of polynomials, exactly: modulo primes whose product
 /// passes twice the bound `Π_i Σ_j ‖S_ij‖₁` on its coefficients, each from its values at
 /// `deg + 1` points, then by the Chinese remainder theorem.
@@ -432,7 +430,7 @@ fn determinant(minor: &[Vec<Vec<BigInt>>]) -> IntPoly {
     let needed = BigInt::from(2) * bound;
     let mut modulus = BigInt::one();
     let mut coeffs = vec![BigInt::zero(); degree + 1];
-    let mut p = PRIMES_BELOW;
+    let mut p = PRIME;
     while modulus <= needed {
         let values: Vec<u64> = (0..=degree as u64)
             .map(|u| determinant_mod(minor, u, p))
@@ -533,78 +531,6 @@ fn evaluate_mod(poly: &[BigInt], u: u64, p: u64) -> u64 {
     poly.iter()
         .rev()
         .fold(0, |acc, c| (mul_mod(acc, u, p) + big_mod(c, p)) % p)
-}
-
-/// `a` modulo `p`, in `0..p`.
-fn big_mod(a: &BigInt, p: u64) -> u64 {
-    let r = a % BigInt::from(p);
-    let r = if r.is_negative() {
-        r + BigInt::from(p)
-    } else {
-        r
-    };
-    u64::try_from(r).expect("below p")
-}
-
-/// `a·b` modulo `p`.
-fn mul_mod(a: u64, b: u64, p: u64) -> u64 {
-    ((u128::from(a) * u128::from(b)) % u128::from(p)) as u64
-}
-
-/// `a^e` modulo `p`, by repeated squaring.
-fn pow_mod(mut a: u64, mut e: u64, p: u64) -> u64 {
-    let mut acc = 1;
-    while e > 0 {
-        if e & 1 == 1 {
-            acc = mul_mod(acc, a, p);
-        }
-        a = mul_mod(a, a, p);
-        e >>= 1;
-    }
-    acc
-}
-
-/// `1/a` modulo the prime `p` (Fermat).
-fn inverse_mod(a: u64, p: u64) -> u64 {
-    pow_mod(a, p - 2, p)
-}
-
-/// The largest prime below `n` (Miller–Rabin with the bases that decide every 64-bit number).
-fn previous_prime(n: u64) -> u64 {
-    (3..=n - 2)
-        .rev()
-        .step_by(2)
-        .find(|&m| is_prime(m))
-        .expect("a prime below n")
-}
-
-/// Whether `n` is prime.
-fn is_prime(n: u64) -> bool {
-    const BASES: [u64; 12] = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37];
-    if n < 2 {
-        return false;
-    }
-    if let Some(&b) = BASES.iter().find(|&&b| n.is_multiple_of(b)) {
-        return n == b;
-    }
-    let (mut d, mut s) = (n - 1, 0);
-    while d % 2 == 0 {
-        d /= 2;
-        s += 1;
-    }
-    BASES.iter().all(|&a| {
-        let mut x = pow_mod(a, d, n);
-        if x == 1 || x == n - 1 {
-            return true;
-        }
-        for _ in 1..s {
-            x = mul_mod(x, x, n);
-            if x == n - 1 {
-                return true;
-            }
-        }
-        false
-    })
 }
 
 #[cfg(test)]
