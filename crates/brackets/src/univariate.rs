@@ -198,26 +198,10 @@ impl IntPoly {
     /// polynomial left once their linear factors are divided out (a constant when none is
     /// left). Refused past [`MAX_BISECTIONS`] for one root.
     pub fn rational_roots(&self) -> Result<(Vec<Rational>, IntPoly), EngineError> {
-        let mut f = self.square_free();
+        let square_free = self.square_free();
+        let intervals = square_free.real_roots();
+        let mut f = square_free.clone();
         let mut roots = Vec::new();
-        if f.degree().unwrap_or(0) == 0 {
-            return Ok((roots, f));
-        }
-        if f.0[0].is_zero() {
-            roots.push(Rational::zero());
-            f = IntPoly(f.0[1..].to_vec());
-        }
-        let mirrored = f.mirrored();
-        let mut intervals = Vec::new();
-        for (sign, g) in [(1, &f), (-1, &mirrored)] {
-            for found in g.positive_roots() {
-                intervals.push(match found {
-                    Isolated::Root(r) => Isolated::Root(if sign < 0 { -r } else { r }),
-                    Isolated::Interval(a, b) if sign < 0 => Isolated::Interval(-b, -a),
-                    interval => interval,
-                });
-            }
-        }
         // The roots found exactly come out first, so that no interval ends at a root of `f`.
         for found in &intervals {
             if let Isolated::Root(r) = found {
@@ -233,7 +217,7 @@ impl IntPoly {
                 }
             }
         }
-        let mut rest = self.square_free();
+        let mut rest = square_free;
         for r in &roots {
             rest = rest.divide_out(&linear_factor(r));
         }
@@ -252,15 +236,31 @@ impl IntPoly {
     /// assert_eq!(IntPoly::from_i64(&[1, -3, 2]).real_root_count(), 2);
     /// ```
     pub fn real_root_count(&self) -> usize {
-        let mut f = self.square_free();
-        if f.degree().unwrap_or(0) == 0 {
-            return 0;
+        self.square_free().real_roots().len()
+    }
+
+    /// The real roots of a square-free polynomial, each once: `0` and the others found
+    /// exactly, the rest each in an interval of its own, on both half lines.
+    fn real_roots(&self) -> Vec<Isolated> {
+        let mut found = Vec::new();
+        if self.degree().unwrap_or(0) == 0 {
+            return found;
         }
-        let at_zero = usize::from(f.0[0].is_zero());
-        if at_zero == 1 {
+        let mut f = self.clone();
+        if f.0[0].is_zero() {
+            found.push(Isolated::Root(Rational::zero()));
             f = IntPoly(f.0[1..].to_vec());
         }
-        at_zero + f.positive_roots().len() + f.mirrored().positive_roots().len()
+        for (sign, g) in [(1, f.clone()), (-1, f.mirrored())] {
+            for root in g.positive_roots() {
+                found.push(match root {
+                    Isolated::Root(r) => Isolated::Root(if sign < 0 { -r } else { r }),
+                    Isolated::Interval(a, b) if sign < 0 => Isolated::Interval(-b, -a),
+                    interval => interval,
+                });
+            }
+        }
+        found
     }
 
     /// `f(−x)`, whose positive roots are the negatives of `f`'s negative roots.
