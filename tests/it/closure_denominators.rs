@@ -5,9 +5,10 @@
 //! denominator) not reported, an atom of an angle, and the command line.
 
 use brackets::closure::{closure, Bracket, Closure, ClosureOptions};
+use brackets::Condition;
 use superint::system_file::{load_str, LimitsOverride, LoadedSystem};
 
-use crate::{assert_proved, normalize, scratch_text, superint};
+use crate::{assert_proved, normalize, scratch_text, superint, superint_ok, superint_refused};
 
 /// Calogero–Moser with three bodies, `g = a²` for the Lax matrix `L_ij = p_i δ_ij +
 /// ia/(x_i − x_j)`: `f1 = Σ x_i`, `f2 = Σ x_i p_i`, `f3 = Σ x_i p_i² + g Σ (x_i + x_j)/(x_i −
@@ -324,4 +325,69 @@ fn closure_denominators_zero_at_one_moves_the_values() {
         err.contains("the denominator (a − b) is zero at a = 2, b = 2"),
         "{err}"
     );
+}
+
+/// The Garnier system with a coupling `c q1` and `a1 − a2` declared: a condition that sets
+/// `c = 1/(a1 − a2)` has no value where `a1 = a2`. `K = c (a1 − a2) q1` is `q1` there, so no
+/// vector of the linear algebra divides by `a1 − a2`; at `a1 = a2 = 1` the closure found
+/// `K = 0` and exited 0. It is refused now, on the command line (exit status 2) and in the
+/// library, as a search refuses such a condition; at the default values, 1, the parameters of
+/// a denominator that the condition divides by move off as a generator's do, and the closure
+/// finds `K = Q`.
+#[test]
+fn closure_denominators_refuse_a_condition_that_divides_by_a_vanishing_denominator() {
+    let text = "name = \"Garnier with a coupling\"\n\
+                hamiltonian = \"(p_q1^2 + p_q2^2)/2 + (a1*q1^2 + a2*q2^2)/2 + (q1^2 + q2^2)^2/4 + c*q1\"\n\
+                [phase_space]\n\
+                coordinates = [\"q1\", \"q2\"]\n\
+                parameters = [\"a1\", \"a2\", \"c\"]\n\
+                denominators = [\"a1 - a2\"]\n\
+                [[function]]\nname = \"K\"\nvalue = \"c*(a1 - a2)*q1\"\n\
+                [[function]]\nname = \"Q\"\nvalue = \"q1\"\n\
+                [[function]]\nname = \"V\"\nvalue = \"(a1*q1^2 + a2*q2^2)/2\"\n";
+    let f = scratch_text("closure-denominators-condition", "coupled.toml", text);
+    let f = f.to_str().unwrap();
+    let when = ["--when", "c = 1/(a1 - a2)", "--degree", "1", "--no-timings"];
+    let err =
+        superint_refused(&[&["closure", f, "K", "Q", "--fix", "a1=1,a2=1"][..], &when].concat());
+    assert!(
+        err.contains("the denominator (a1 − a2) is zero at a1 = 1, a2 = 1"),
+        "{err}"
+    );
+    let out = normalize(&superint_ok(
+        &[&["closure", f, "K", "Q"][..], &when].concat(),
+    ));
+    assert!(
+        out.contains("K = Q at c = 1/(a1 − a2) [R1 proved]"),
+        "{out}"
+    );
+    // Neither generator holds a1 − a2; the condition does, and the values move off 1.
+    let out = normalize(&superint_ok(
+        &[&["closure", f, "V", "Q"][..], &when].concat(),
+    ));
+    assert!(
+        out.contains("at a1 = 7, a2 = 11/2 (not 1, where the denominator (a1 − a2) is zero)"),
+        "{out}"
+    );
+
+    let file = load_str("coupled.toml", text, &LimitsOverride::default()).unwrap();
+    let system = file.system();
+    let value = system.parse("1/(a1 - a2)").unwrap();
+    let condition = Condition::new("c = 1/(a1 − a2)", system.var("c"), value);
+    let (a1, a2) = (system.var("a1"), system.var("a2"));
+    let at = |x: i64, y: i64| {
+        ClosureOptions::new(1)
+            .when(condition.clone())
+            .fix(a1, x)
+            .fix(a2, y)
+    };
+    let err = closure(system, &["K", "Q"], &at(2, 2)).unwrap_err();
+    assert!(
+        err.to_string()
+            .starts_with("the denominator (a1 − a2) is zero at a1 = 2, a2 = 2"),
+        "{err}"
+    );
+    let c = closure(system, &["K", "Q"], &at(2, 3)).unwrap();
+    assert_eq!(c.relations.len(), 1);
+    assert_eq!(c.relations[0].to_string(), "K = Q");
 }

@@ -259,6 +259,13 @@ impl Condition {
         &self.subs
     }
 
+    /// The values the substitution sets its variables to (`1/(a1 − a2)` of `c = 1/(a1 −
+    /// a2)`): what the linear algebra refuses where one divides by a declared denominator
+    /// that vanishes at its fixed values, since the condition has no value there.
+    pub fn values(&self) -> impl Iterator<Item = &Expr> + Clone {
+        self.subs.iter().map(|(_, value)| value)
+    }
+
     /// The substitution as text that superint reads back, with the variables' ASCII names:
     /// `p_theta = I*omega`, pieces separated by commas.
     pub fn ascii(&self) -> String {

@@ -11,7 +11,7 @@ use trigpoly::{AlgebraError, Expr, Rational, Var, VarKind, Vars};
 use super::columns::{Rows, TermTable};
 use super::{check_monomial_count, monomials, ClosureOptions};
 use crate::claim::Condition;
-use crate::clearing::Clearing;
+use crate::clearing::{refuse_division_by_zero, Clearing};
 use crate::error::EngineError;
 use crate::modular::SparseVec;
 use crate::scaling::Scaling;
@@ -130,12 +130,19 @@ impl Span {
             .collect();
         let mut parameters = fixed_parameters(system, options, g_sym.iter().chain(targets));
         let space = system.space();
-        let used_atoms = space
-            .denominator_atoms()
-            .iter()
-            .filter(|(atom, _)| g_sym.iter().chain(targets).any(|e| e.contains(*atom)));
+        // The condition's values enter the generators and the targets, but a term of them
+        // that divides by an atom may leave none (`c (a1 − a2) x` at `c = 1/(a1 − a2)` is
+        // `x`): the atoms they hold are used too, and refused where they vanish, as a
+        // search refuses them.
+        let condition_values = condition.into_iter().flat_map(Condition::values);
+        let used_atoms = space.denominator_atoms().iter().filter(|(atom, _)| {
+            (g_sym.iter().chain(targets))
+                .chain(condition_values.clone())
+                .any(|e| e.contains(*atom))
+        });
         let denominator_zero_at_one =
             off_vanishing_denominators(vars, &mut parameters, &options.fixed, used_atoms);
+        refuse_division_by_zero(space.denominator_atoms(), &parameters, condition_values)?;
         let fix = |e: &Expr| fix_parameters(e, &parameters);
         let g: Vec<Expr> = g_sym.iter().map(fix).collect::<Result<_, _>>()?;
         // A complex target too: in real generators it needs complex coefficients (`i L`), and

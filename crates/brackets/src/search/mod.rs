@@ -316,13 +316,11 @@ fn fixed_search_problem(
     );
     // `H` and the condition enter every image, but a term of them that divides by an atom may
     // leave none (a constant's bracket is zero): refused where that atom vanishes too.
-    let condition_values = condition
-        .into_iter()
-        .flat_map(|c| c.subs().iter().map(|s| &s.1));
     refuse_division_by_zero(
         system.space().denominator_atoms(),
         &parameters,
-        std::iter::once(system.hamiltonian()).chain(condition_values),
+        std::iter::once(system.hamiltonian())
+            .chain(condition.into_iter().flat_map(Condition::values)),
     )?;
     let fixed = fixed_hamiltonian_and_condition(system, options, &parameters)?;
     let on_level = match &options.on {
