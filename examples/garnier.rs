@@ -36,7 +36,8 @@ const CLAIMS: [(&str, &str, bool); 10] = [
 ];
 
 /// The phase space `(q1, p1), (q2, p2)` with the parameters `a1, a2` and the denominator
-/// `a1 − a2`, and `H`; no named function yet, so that a search starts from `H` alone.
+/// `a1 − a2` (read and checked as a system file's `denominators`, its printed forms derived
+/// from it), and `H`; no named function yet, so that a search starts from `H` alone.
 fn garnier() -> Result<System, EngineError> {
     let vars = Vars::builder()
         .coordinate("q1")
@@ -45,7 +46,7 @@ fn garnier() -> Result<System, EngineError> {
         .momentum("p2")
         .parameter("a1")
         .parameter("a2")
-        .denominator("a1 - a2", "a1 − a2", "a_1 - a_2")
+        .checked_denominator("a1 - a2")?
         .build()?;
     let space = PhaseSpace::new(&vars, &[("q1", "p1"), ("q2", "p2")])?;
     let h = Expr::parse(

@@ -944,9 +944,11 @@ impl<'a> Builder<'a> {
     }
 
     /// The variables with the denominator atoms of `[phase_space] denominators` added, one at
-    /// a time, each read in the variables with the atoms before it. Refused: a text that does
-    /// not read, zero, a single term (division by one is exact already), a polynomial that is
-    /// not real, and one that is a product of those declared before it (times a term).
+    /// a time, each read in the variables with the atoms before it and declared by
+    /// [`VarsBuilder::checked_denominator`], as a program declares one. Refused: a text that
+    /// does not read (placed in it), and what [`Expr::denominator_refusal`] refuses (zero, a
+    /// single term, a polynomial that is not real, one that is a product of those declared
+    /// before it).
     fn denominators(
         &self,
         declared: &[Spanned<String>],
@@ -956,49 +958,14 @@ impl<'a> Builder<'a> {
         let mut builder = builder;
         for d in declared {
             let text = self.text(d);
-            let value = Expr::parse(&vars, &text.value)
-                .map_err(|e| super::scope::expression_error(&self.source, &text, &e))?;
-            let refuse = |why: String| Err(self.error(ErrorKind::Expression, d.span(), why));
-            // A long denominator is shown by its first terms and its size.
-            let shown = value.brief_excerpt();
-            if value.is_zero() {
-                return refuse("a denominator cannot be 0".into());
+            // A text that does not read is placed in it; one that reads is checked and
+            // declared as a program declares it.
+            if let Err(e) = Expr::parse(&vars, &text.value) {
+                return Err(super::scope::expression_error(&self.source, &text, &e));
             }
-            if value.is_monomial() {
-                return refuse(format!(
-                    "{shown} is a single term: division by it is exact already, so declare \
-                     only sums (such as \"x - y\") as denominators"
-                ));
-            }
-            if value.conj() != value {
-                return refuse(format!("the denominator {shown} is not real"));
-            }
-            if vars.radicals().any(|r| value.contains(r)) {
-                return refuse(format!(
-                    "the denominator {shown} has a radical in it: a denominator is a polynomial \
-                     in the coordinates, momenta and parameters; divide by {shown} where it \
-                     stands instead, which superint does through its conjugates"
-                ));
-            }
-            if let Some(atom) = vars.denominators().find(|&a| value.contains(a)) {
-                return refuse(format!(
-                    "the denominator {shown} divides by {}, declared before it: a denominator \
-                     is a polynomial in the coordinates, momenta and parameters; declare its \
-                     numerator instead",
-                    vars.variable(atom).unicode()
-                ));
-            }
-            if Expr::one(&vars).checked_div(&value).is_ok() {
-                return refuse(format!(
-                    "{shown} is a product of the denominators declared before it and the \
-                     radicands (times a term): division by it is exact already"
-                ));
-            }
-            // A harmonic shows as written (`cos(3φ)`, not `−3 cos φ + 4 cos³φ`).
-            let (unicode, latex) = value
-                .as_harmonic()
-                .unwrap_or_else(|| (value.to_string(), value.to_latex()));
-            builder = builder.denominator(&value.to_ascii(), &unicode, &latex);
+            builder = builder
+                .checked_denominator(&text.value)
+                .map_err(|e| self.error(ErrorKind::Expression, d.span(), e.to_string()))?;
             vars = builder
                 .clone()
                 .build()

@@ -855,9 +855,53 @@ impl VarsBuilder {
         self.variable(name, VarKind::Poisson)
     }
     /// Declares a denominator atom ([`VarKind::Denominator`]) standing for the polynomial
+    /// `polynomial` reads as in the variables declared so far, checked as a system file's
+    /// `denominators` are ([`Expr::denominator_refusal`](crate::Expr::denominator_refusal)),
+    /// with its three forms derived from it
+    /// ([`Expr::denominator_forms`](crate::Expr::denominator_forms)): the way to declare one
+    /// in code. A polynomial that does not read, or is refused, is an
+    /// [`AlgebraError::DenominatorRefused`] naming it and saying why; so is an error of the
+    /// variables declared before it (two alike), which it reads in.
+    ///
+    /// ```
+    /// use trigpoly::{AlgebraError, Expr, Vars};
+    ///
+    /// let builder = Vars::builder().coordinate("q1").parameter("a1").parameter("a2");
+    /// let vars = builder.clone().checked_denominator("a1 - a2")?.build()?;
+    /// let e = Expr::parse(&vars, "q1/(2*(a2 - a1))").unwrap();
+    /// assert_eq!(e.to_string(), "−q1/(2 (a1 − a2))");
+    /// assert_eq!(e.to_latex(), r"-\frac{q_{1}}{2 (a_{1} - a_{2})}");
+    /// // A single term divides exactly already; it is refused, saying why.
+    /// let Err(AlgebraError::DenominatorRefused { denominator, message }) =
+    ///     builder.checked_denominator("2*a1")
+    /// else {
+    ///     panic!("2 a1 is a single term");
+    /// };
+    /// assert_eq!(denominator, "(2*a1)");
+    /// assert!(message.starts_with("2 a1 is a single term"), "{message}");
+    /// # Ok::<(), AlgebraError>(())
+    /// ```
+    pub fn checked_denominator(self, polynomial: &str) -> Result<Self, AlgebraError> {
+        let refused = |message: String| AlgebraError::DenominatorRefused {
+            denominator: format!("({polynomial})"),
+            message,
+        };
+        let vars = self.clone().build().map_err(|e| refused(e.to_string()))?;
+        let value = crate::Expr::parse(&vars, polynomial)
+            .map_err(|e| refused(format!("the denominator {polynomial} does not read: {e}")))?;
+        if let Some(why) = crate::Expr::denominator_refusal(&value) {
+            return Err(refused(why));
+        }
+        let (ascii, unicode, latex) = value.denominator_forms();
+        Ok(self.denominator(&ascii, &unicode, &latex))
+    }
+    /// Declares a denominator atom ([`VarKind::Denominator`]) standing for the polynomial
     /// whose parseable ASCII form is `ascii` and whose text and LaTeX forms are `unicode` and
-    /// `latex`; its names are these in parentheses, `(x - y)`, which the parser never reads as
-    /// a name but reads back as `D` itself.
+    /// `latex`, as given: nothing checks that the three agree, or that the polynomial may be
+    /// a denominator, before [`Expr::denominator_atoms`](crate::Expr::denominator_atoms)
+    /// reads `ascii`. [`VarsBuilder::checked_denominator`] derives and checks them. Its names
+    /// are these in parentheses, `(x - y)`, which the parser never reads as a name but reads
+    /// back as `D` itself.
     pub fn denominator(mut self, ascii: &str, unicode: &str, latex: &str) -> Self {
         self.vars.push(Variable {
             name: format!("({ascii})"),

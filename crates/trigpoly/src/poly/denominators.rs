@@ -33,6 +33,61 @@ thread_local! {
 type ClearedAtom<C> = (Var, Poly<C>, i64);
 
 impl<C: Coefficient> Poly<C> {
+    /// Why `value` cannot be declared a denominator, if it cannot: it is zero, a single term
+    /// (division by it is exact already), not real, holds a radical or divides by a
+    /// denominator declared before it, or is a product of those and the radicands times a
+    /// term. What [`VarsBuilder::checked_denominator`](crate::VarsBuilder::checked_denominator)
+    /// and a system file's `denominators` refuse.
+    pub fn denominator_refusal(value: &Self) -> Option<String> {
+        let vars = &value.vars;
+        // A long denominator is shown by its first terms and its size.
+        let shown = value.brief_excerpt();
+        if value.is_zero() {
+            return Some("a denominator cannot be 0".into());
+        }
+        if value.is_monomial() {
+            return Some(format!(
+                "{shown} is a single term: division by it is exact already, so declare only \
+                 sums (such as \"x - y\") as denominators"
+            ));
+        }
+        if value.conj() != *value {
+            return Some(format!("the denominator {shown} is not real"));
+        }
+        if vars.radicals().any(|r| value.contains(r)) {
+            return Some(format!(
+                "the denominator {shown} has a radical in it: a denominator is a polynomial in \
+                 the coordinates, momenta and parameters; divide by {shown} where it stands \
+                 instead, which superint does through its conjugates"
+            ));
+        }
+        if let Some(atom) = vars.denominators().find(|&a| value.contains(a)) {
+            return Some(format!(
+                "the denominator {shown} divides by {}, declared before it: a denominator is a \
+                 polynomial in the coordinates, momenta and parameters; declare its numerator \
+                 instead",
+                vars.variable(atom).unicode()
+            ));
+        }
+        if Self::one(vars).checked_div(value).is_ok() {
+            return Some(format!(
+                "{shown} is a product of the denominators declared before it and the radicands \
+                 (times a term): division by it is exact already"
+            ));
+        }
+        None
+    }
+
+    /// The three forms a denominator atom of `self` is declared by
+    /// ([`VarsBuilder::denominator`](crate::VarsBuilder::denominator)): ASCII that reads back,
+    /// text and LaTeX, a harmonic as written (`cos(3φ)`, not `−3 cos φ + 4 cos³φ`).
+    pub fn denominator_forms(&self) -> (String, String, String) {
+        let (unicode, latex) = self
+            .as_harmonic()
+            .unwrap_or_else(|| (self.to_string(), self.to_latex()));
+        (self.to_ascii(), unicode, latex)
+    }
+
     /// The denominator atoms of `vars` with the polynomials they stand for, in declaration
     /// order (none for a set without them). Refused: a definition that does not read, or reads
     /// as zero, a single term or an expression with atoms (its clearing would be wrong).

@@ -298,3 +298,64 @@ fn misuse_says_which_counts_differ() {
         "an empty sum of products has no variable set"
     );
 }
+
+/// A denominator declared in code by its polynomial alone
+/// ([`trigpoly::VarsBuilder::checked_denominator`]): its printed forms are derived from it, so
+/// they agree with what it reads as (`(a2 − a1)` declared as `a2 - a1` prints so, and reads
+/// back), and a polynomial that cannot be one is refused with its text and the reason, as a
+/// system file's is: one that names a variable not declared before it, a single term, one
+/// that is not real, and one that a denominator declared before it already divides (itself
+/// again, or its square).
+#[test]
+fn a_denominator_declared_in_code_is_checked() {
+    let builder = || {
+        Vars::builder()
+            .coordinate("q")
+            .parameter("a1")
+            .parameter("a2")
+    };
+    let vars = builder()
+        .checked_denominator("a2 - a1")
+        .unwrap()
+        .build()
+        .unwrap();
+    let atom = vars.denominators().next().unwrap();
+    assert_eq!(vars.variable(atom).unicode(), "(−a1 + a2)");
+    let e = Expr::parse(&vars, "q/(a1 - a2)").unwrap();
+    assert_eq!(e.to_string(), "−q/(−a1 + a2)");
+    assert_eq!(Expr::parse(&vars, &e.to_ascii()).unwrap(), e);
+    assert_eq!(Expr::denominator_atoms(&vars).unwrap().len(), 1);
+
+    let refusal = |b: trigpoly::VarsBuilder, text: &str| match b.checked_denominator(text) {
+        Err(AlgebraError::DenominatorRefused {
+            denominator,
+            message,
+        }) => {
+            assert_eq!(denominator, format!("({text})"));
+            message
+        }
+        other => panic!("{text}: {other:?}"),
+    };
+    let message = refusal(builder(), "a1 - b");
+    assert!(
+        message.starts_with("the denominator a1 - b does not read"),
+        "{message}"
+    );
+    assert_eq!(
+        refusal(builder(), "2*a1"),
+        "2 a1 is a single term: division by it is exact already, so declare only sums (such as \
+         \"x - y\") as denominators"
+    );
+    assert_eq!(
+        refusal(builder(), "a1 + i*a2"),
+        "the denominator a1 + i a2 is not real"
+    );
+    let declared = || builder().checked_denominator("a1 - a2").unwrap();
+    for again in ["a1 - a2", "(a1 - a2)^2", "a2 - a1"] {
+        assert!(
+            refusal(declared(), again)
+                .contains("is a product of the denominators declared before it"),
+            "{again}"
+        );
+    }
+}
