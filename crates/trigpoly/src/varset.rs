@@ -85,10 +85,26 @@ pub struct Var {
     declaration: u32,
 }
 
-/// `Var(2 of declaration 5)`: the index, and which variables it is an index into.
+/// `Var(p_x, 2 of declaration 5)`: the variable's name (its ASCII form, which reads back), the
+/// index, and which variables it is an index into (a handle alone does not say which set it
+/// belongs to: the name is that of the variable at its place in the sets of its declaration).
 impl std::fmt::Debug for Var {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "Var({} of declaration {})", self.index, self.declaration)
+        let name = {
+            let interned = INTERNED.lock().unwrap_or_else(|e| e.into_inner());
+            (interned.iter())
+                .find(|s| s.declaration == self.declaration)
+                .and_then(|s| s.vars.get(self.index()))
+                .map(|v| v.ascii.clone())
+        };
+        match name {
+            Some(name) => write!(
+                f,
+                "Var({name}, {} of declaration {})",
+                self.index, self.declaration
+            ),
+            None => write!(f, "Var({} of declaration {})", self.index, self.declaration),
+        }
     }
 }
 
@@ -739,6 +755,10 @@ impl VarSet {
 #[derive(Clone)]
 pub struct Vars(&'static VarSet);
 
+/// Every set the process has built, once ([`Vars::intern`]); a handle's `Debug` finds its
+/// variable's name here by its declaration number.
+static INTERNED: Mutex<Vec<&'static VarSet>> = Mutex::new(Vec::new());
+
 impl Vars {
     /// Starts declaring variables: [`VarsBuilder::build`] checks them and gives the handle of
     /// their set.
@@ -750,7 +770,6 @@ impl Vars {
     /// Its declaration number is that of the interned sets with the same variables, or the
     /// next one.
     fn intern(mut set: VarSet) -> Vars {
-        static INTERNED: Mutex<Vec<&'static VarSet>> = Mutex::new(Vec::new());
         static DECLARATIONS: std::sync::atomic::AtomicU32 = std::sync::atomic::AtomicU32::new(0);
         // A panic elsewhere cannot leave the list half-changed: only a push changes it.
         let mut interned = INTERNED.lock().unwrap_or_else(|e| e.into_inner());
@@ -1194,6 +1213,30 @@ mod tests {
             assert_eq!(BadName::of(name), None, "{name}");
             Vars::builder().coordinate(name).build().expect(name);
         }
+    }
+
+    /// A handle's `Debug` names its variable, beside its index and declaration, so that a
+    /// failed comparison of handles or of values keyed by them says which variables differ.
+    #[test]
+    fn a_handle_shows_its_variable_s_name() {
+        let vars = Vars::builder()
+            .coordinate("x")
+            .momentum("p_x")
+            .parameter("ω")
+            .checked_denominator("x - ω")
+            .unwrap()
+            .build()
+            .unwrap();
+        let shown: Vec<String> = vars.vars().map(|v| format!("{v:?}")).collect();
+        let declaration = vars.vars().next().unwrap().declaration;
+        let names = ["x", "p_x", "omega", "(x - omega)"];
+        for (k, (shown, name)) in shown.iter().zip(names).enumerate() {
+            assert_eq!(
+                *shown,
+                format!("Var({name}, {k} of declaration {declaration})")
+            );
+        }
+        assert_eq!(shown.len(), 4);
     }
 
     #[test]
