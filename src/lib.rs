@@ -2,9 +2,9 @@
 //!
 //! Exact Poisson-bracket identities of superintegrable Hamiltonian systems: a rigid rotor
 //! coupled to planar potentials. This crate is the facade of the workspace: it re-exports the
-//! ring ([`trigpoly`]) and the bracket engine ([`brackets`]), holds the paper as data
-//! ([`paper`]), the structured [`report`] that checking it produces, and the renderers
-//! ([`render`]) that print a report as text, Markdown, LaTeX or JSON.
+//! ring ([`trigpoly`][trigpoly-crate]) and the bracket engine ([`brackets`][brackets-crate]),
+//! holds the paper as data ([`paper`]), the structured [`report`] that checking it produces,
+//! and the renderers ([`render`]) that print a report as text, Markdown, LaTeX or JSON.
 //!
 //! A system may be built in code ([`brackets::System`]) or loaded from a system file
 //! ([`system_file::load`]); either becomes a [`system_file::LoadedSystem`], to which a program
@@ -16,9 +16,15 @@
 //!
 //! A program that only uses the library can depend on it with `default-features = false`
 //! (`superint = { path = "../superint", default-features = false }`, by path or git, as the
-//! workspace's crates are not published; [`trigpoly`] and [`brackets`] come with it): the
-//! feature `cli` (on by default) adds the command-line program and its allocator, and with
-//! them clap, indicatif and mimalloc.
+//! workspace's crates are not published; [`trigpoly`][trigpoly-crate] and
+//! [`brackets`][brackets-crate] come with it): the feature `cli` (on by default) adds the
+//! command-line program and its allocator, and with them clap, indicatif and mimalloc.
+//!
+//! [trigpoly-crate]: ../trigpoly/index.html
+//! [brackets-crate]: ../brackets/index.html
+// The two crates are linked by their pages: `cargo doc` may render this page before it has
+// made theirs (it documents the crates of the workspace at once), and rustdoc links a crate
+// by name only when its pages are there when it starts, so `[`trigpoly`]` was plain text.
 //!
 //! ```
 //! use superint::prelude::*;

@@ -2675,3 +2675,26 @@ fn a_files_own_text_named_in_angle_brackets_is_hinted_as_the_files() {
     assert_eq!(hint("t.toml"), own);
     assert_eq!(hint("<generated>"), own);
 }
+
+/// The front page of the docs links the workspace's crates by their pages: by name
+/// (`` [`trigpoly`] ``) rustdoc links a crate only when its pages exist when it starts on this
+/// one, and `cargo doc` documents the crates at once, so that a fresh run showed `[trigpoly]`
+/// as plain text.
+#[test]
+fn the_front_page_links_the_workspace_crates_by_their_pages() {
+    let lib = include_str!("../../src/lib.rs");
+    let front: Vec<&str> = lib
+        .lines()
+        .take_while(|l| l.starts_with("//"))
+        .filter_map(|l| l.strip_prefix("//!"))
+        .collect();
+    let front = front.join("\n");
+    for name in ["trigpoly", "brackets"] {
+        let by_page = format!("[`{name}`][{name}-crate]");
+        assert!(front.contains(&by_page), "{name}");
+        assert!(!front.contains(&format!("[`{name}`] ")), "{name} by name");
+        assert!(!front.contains(&format!("[`{name}`])")), "{name} by name");
+        let target = format!("\n [{name}-crate]: ../{name}/index.html");
+        assert!(front.contains(&target), "{name}: {front}");
+    }
+}
