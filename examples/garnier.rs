@@ -182,6 +182,75 @@ fn search_and_write(
     Ok(())
 }
 
+/// The searches from `H` alone, each with its own title and stated by what it finds: degree
+/// ≤ 2 in the momenta and ≤ 4 in `q1, q2`, or ≤ 4 and ≤ 8, at chosen values or for every
+/// value.
+fn searches(bare: &System) -> [(&'static str, SearchOptions, Stated); 4] {
+    let (a1, a2) = (bare.var("a1"), bare.var("a2"));
+    let space = SearchSpace::default().momenta_degree(2).positions_degree(4);
+    let wider = SearchSpace::default().momenta_degree(4).positions_degree(8);
+    let at = |x: i64, y: i64, space| SearchOptions::new(space).fix(a1, x).fix(a2, y).new_only();
+    let integrals = &["F1", "F2", "H"];
+    [
+        // At a1 = 1, a2 = 2: the constants, H and one new integral, −2 F2 at these values
+        // (F1 = 2H − F2).
+        (
+            "the Garnier system at a1 = 1, a2 = 2",
+            at(1, 2, space),
+            Stated {
+                integrals: 3,
+                new: 1,
+                known: integrals,
+                written: "−2 F2",
+                symbolic: false,
+            },
+        ),
+        // Wider: the same one new, and the products H², H F2 and F2².
+        (
+            "the Garnier system at a1 = 1, a2 = 2, to degree 4 in the momenta",
+            at(1, 2, wider),
+            Stated {
+                integrals: 6,
+                new: 1,
+                known: integrals,
+                written: "−2 F2",
+                symbolic: false,
+            },
+        ),
+        // At a1 = a2 the potential is central: F1 and F2 have no value there, and the
+        // rotation L is conserved, the one new integral (a denominator that nothing divides
+        // by may vanish at the values taken).
+        (
+            "the Garnier system at a1 = a2 = 3",
+            at(3, 3, space),
+            Stated {
+                integrals: 4,
+                new: 1,
+                known: &["L", "H"],
+                written: "L",
+                symbolic: false,
+            },
+        ),
+        // For every a1, a2, with coefficients of degree ≤ 1 in them and one power of
+        // 1/(a1 − a2): the constants (1, a1, a2, 1/(a1 − a2), a2/(a1 − a2)), H and
+        // H/(a1 − a2), and one new integral, 2 F2.
+        (
+            "the Garnier system for every a1, a2",
+            SearchOptions::new(space.parameters_degree(1).denominators_degree(1))
+                .symbolic(a1)
+                .symbolic(a2)
+                .new_only(),
+            Stated {
+                integrals: 8,
+                new: 1,
+                known: integrals,
+                written: "2 F2",
+                symbolic: true,
+            },
+        ),
+    ]
+}
+
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let bare = garnier()?;
     let garnier = with_integrals(&bare)?;
@@ -206,72 +275,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         return Err(format!("{{L, H}} = {factored}, where q1 q2 (a1 − a2) was stated").into());
     }
 
-    // From H alone, each search stated by what it finds. Degree ≤ 2 in the momenta and ≤ 4 in
-    // q1, q2, or ≤ 4 and ≤ 8.
-    let (a1, a2) = (bare.var("a1"), bare.var("a2"));
-    let space = SearchSpace::default().momenta_degree(2).positions_degree(4);
-    let wider = SearchSpace::default().momenta_degree(4).positions_degree(8);
-    let at = |x: i64, y: i64, space| SearchOptions::new(space).fix(a1, x).fix(a2, y).new_only();
-    let integrals = &["F1", "F2", "H"];
-    let searches = [
-        // At a1 = 1, a2 = 2: the constants, H and one new integral, −2 F2 at these values
-        // (F1 = 2H − F2).
-        (
-            at(1, 2, space),
-            Stated {
-                integrals: 3,
-                new: 1,
-                known: integrals,
-                written: "−2 F2",
-                symbolic: false,
-            },
-        ),
-        // Wider: the same one new, and the products H², H F2 and F2².
-        (
-            at(1, 2, wider),
-            Stated {
-                integrals: 6,
-                new: 1,
-                known: integrals,
-                written: "−2 F2",
-                symbolic: false,
-            },
-        ),
-        // At a1 = a2 the potential is central: F1 and F2 have no value there, and the
-        // rotation L is conserved, the one new integral (a denominator that nothing divides
-        // by may vanish at the values taken).
-        (
-            at(3, 3, space),
-            Stated {
-                integrals: 4,
-                new: 1,
-                known: &["L", "H"],
-                written: "L",
-                symbolic: false,
-            },
-        ),
-        // For every a1, a2, with coefficients of degree ≤ 1 in them and one power of
-        // 1/(a1 − a2): the constants (1, a1, a2, 1/(a1 − a2), a2/(a1 − a2)), H and
-        // H/(a1 − a2), and one new integral, 2 F2.
-        (
-            SearchOptions::new(space.parameters_degree(1).denominators_degree(1))
-                .symbolic(a1)
-                .symbolic(a2)
-                .new_only(),
-            Stated {
-                integrals: 8,
-                new: 1,
-                known: integrals,
-                written: "2 F2",
-                symbolic: true,
-            },
-        ),
-    ];
-    for (options, stated) in &searches {
-        search_and_write(&bare, &garnier, "the Garnier system", options, stated)?;
+    // From H alone, each search stated by what it finds, under its own title.
+    for (title, options, stated) in &searches(&bare) {
+        search_and_write(&bare, &garnier, title, options, stated)?;
     }
 
     // The algebra of F1, F2 and H: every bracket zero, and F1 + F2 = 2H found, not told.
+    let (a1, a2) = (bare.var("a1"), bare.var("a2"));
     let names = ["F1", "F2", "H"];
     let mut options = ClosureOptions::new(1).parameters_degree(0);
     for v in [a1, a2] {
@@ -288,4 +298,27 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         return Err("the algebra of F1, F2, H is not the one stated".into());
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each search prints a report of its own, titled by where it searches: the four printed
+    /// one title, "Integrals of the Garnier system", between which a reader could not tell.
+    #[test]
+    fn each_search_has_its_own_title() {
+        let bare = garnier().unwrap();
+        let titles: Vec<&str> = searches(&bare).iter().map(|s| s.0).collect();
+        for (k, title) in titles.iter().enumerate() {
+            assert!(title.starts_with("the Garnier system "), "{title}");
+            assert!(!titles[..k].contains(title), "{title} twice");
+        }
+        let (report, _) = search_report(titles[0], &bare, &searches(&bare)[0].1).unwrap();
+        let text = render(&report, Format::Text, &RenderOptions::reproducible());
+        assert!(
+            text.starts_with("Integrals of the Garnier system at a1 = 1, a2 = 2\n"),
+            "{text}"
+        );
+    }
 }
