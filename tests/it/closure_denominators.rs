@@ -391,3 +391,62 @@ fn closure_denominators_refuse_a_condition_that_divides_by_a_vanishing_denominat
     assert_eq!(c.relations.len(), 1);
     assert_eq!(c.relations[0].to_string(), "K = Q");
 }
+
+/// A generator that divides by a declared denominator in terms that vanish on the condition's
+/// surface: `F = p_q1² + a1 q1² + (q1 p_q2 − q2 p_q1)²/(a1 − a2)`, a Garnier-type integral's
+/// form, is `p_q1² + a1 q1²` at `q2 = 0, p_q2 = 0`, so nothing the linear algebra compares
+/// divides by `a1 − a2`; its brackets are formed before the condition, from `F` itself, which
+/// has no value at `a1 = a2`. At `--fix a1=1,a2=1` the closure found `{F, Q} = −2 p_q1` and
+/// exited 0; it is refused now (exit 2, and in the library), and found at `a1 = 2, a2 = 3`.
+#[test]
+fn closure_denominators_refuse_a_generator_that_divides_by_zero_off_the_condition() {
+    let text = "name = \"Garnier-type\"\n\
+                hamiltonian = \"(p_q1^2 + p_q2^2)/2 + (a1*q1^2 + a2*q2^2)/2 + (q1^2 + q2^2)^2/4\"\n\
+                [phase_space]\n\
+                coordinates = [\"q1\", \"q2\"]\n\
+                parameters = [\"a1\", \"a2\"]\n\
+                denominators = [\"a1 - a2\"]\n\
+                [[function]]\nname = \"F\"\n\
+                value = \"p_q1^2 + a1*q1^2 + (q1*p_q2 - q2*p_q1)^2/(a1 - a2)\"\n\
+                [[function]]\nname = \"Q\"\nvalue = \"q1\"\n";
+    let f = scratch_text("closure-denominators-formed", "garnier-type.toml", text);
+    let f = f.to_str().unwrap();
+    let run = [
+        "closure",
+        f,
+        "F",
+        "Q",
+        "--when",
+        "q2 = 0, p_q2 = 0",
+        "--degree",
+        "2",
+    ];
+    let err = superint_refused(&[&run[..], &["--fix", "a1=1,a2=1"]].concat());
+    assert!(
+        err.contains("the denominator (a1 − a2) is zero at a1 = 1, a2 = 1"),
+        "{err}"
+    );
+    let out = normalize(&superint_ok(&[&run[..], &["--fix", "a1=2,a2=3"]].concat()));
+    assert!(out.contains("{F, Q} = −2 p_q1"), "{out}");
+
+    let file = load_str("garnier-type.toml", text, &LimitsOverride::default()).unwrap();
+    let system = file.system();
+    let (q2, p2) = (system.var("q2"), system.var("p_q2"));
+    let zero = system.parse("0").unwrap();
+    let condition =
+        Condition::all("q2 = 0, p_q2 = 0", vec![(q2, zero.clone()), (p2, zero)]).unwrap();
+    let (a1, a2) = (system.var("a1"), system.var("a2"));
+    let at = |x: i64, y: i64| {
+        ClosureOptions::new(2)
+            .when(condition.clone())
+            .fix(a1, x)
+            .fix(a2, y)
+    };
+    let err = closure(system, &["F", "Q"], &at(1, 1)).unwrap_err();
+    assert!(
+        err.to_string()
+            .starts_with("the denominator (a1 − a2) is zero at a1 = 1, a2 = 1"),
+        "{err}"
+    );
+    closure(system, &["F", "Q"], &at(2, 3)).unwrap();
+}

@@ -457,18 +457,22 @@ pub fn closure_of(
     let r = generators.len();
     let condition = options.condition.as_ref();
     let g_sym = span::restricted_generators(system, generators, condition)?;
-    // The brackets `{G_a, G_b}`, `a < b`, after the condition: the targets.
+    // The brackets `{G_a, G_b}`, `a < b`, formed on the whole phase space, then after the
+    // condition: the targets.
     let pairs: Vec<(usize, usize)> = (0..r)
         .flat_map(|a| (a + 1..r).map(move |b| (a, b)))
         .collect();
-    let b_sym: Vec<Expr> = pairs
+    let brackets: Vec<Expr> = pairs
         .iter()
-        .map(|&(a, b)| {
-            let bracket = system.bracket(&generators[a].expr, &generators[b].expr)?;
-            span::restrict(condition, bracket)
-        })
+        .map(|&(a, b)| system.bracket(&generators[a].expr, &generators[b].expr))
         .collect::<Result<_, _>>()?;
-    let span = Span::new(system, g_sym, &b_sym, options, None)?;
+    let formed: Vec<&Expr> = (generators.iter().map(|g| &g.expr))
+        .chain(&brackets)
+        .collect();
+    let b_sym: Vec<Expr> = (brackets.iter())
+        .map(|bracket| span::restrict(condition, bracket.clone()))
+        .collect::<Result<_, _>>()?;
+    let span = Span::new(system, g_sym, &b_sym, &formed, options, None)?;
     timings.monomials = (span.expanded - start).as_secs_f64();
 
     // Relations: the kernel, in column order (exact).
@@ -684,10 +688,13 @@ pub fn expressed_in(
     if target.vars() != system.vars() {
         return Err(AlgebraError::VarSetMismatch.into());
     }
+    let formed: Vec<&Expr> = (generators.iter().map(|g| &g.expr))
+        .chain(std::iter::once(target))
+        .collect();
     let target = span::restrict(condition, target.clone())?;
     let scaling = scaling_of(system, generators, condition)?;
     let parts = homogeneous_parts(&scaling, &target)?;
-    let span = Span::new(system, g_sym, &parts, options, Some(&scaling))?;
+    let span = Span::new(system, g_sym, &parts, &formed, options, Some(&scaling))?;
     let Some(solutions) = express_targets(&span.columns, span.nrows, &span.targets)
         .into_iter()
         .collect::<Option<Vec<_>>>()
@@ -1090,7 +1097,14 @@ mod tests {
             let g_sym = span::restricted_generators(&rotor, &generators, None).unwrap();
             let scaling = scaling_of(&rotor, &generators, None).unwrap();
             let parts = homogeneous_parts(&scaling, &target).unwrap();
-            let span = Span::new(&rotor, g_sym, &parts, options, graded.then_some(&scaling));
+            let span = Span::new(
+                &rotor,
+                g_sym,
+                &parts,
+                &[],
+                options,
+                graded.then_some(&scaling),
+            );
             span.unwrap().monos.len()
         };
         let symbolic = ClosureOptions::new(2)
@@ -1446,7 +1460,7 @@ mod tests {
             .map(|(a, b)| rotor.bracket(&generators[a].expr, &generators[b].expr))
             .collect::<Result<_, _>>()
             .unwrap();
-        let span = Span::new(&rotor, g_sym, &brackets, &options, None).unwrap();
+        let span = Span::new(&rotor, g_sym, &brackets, &[], &options, None).unwrap();
         let bound = 2 * span.nrows + c.monomials;
         assert!(
             grown <= bound,

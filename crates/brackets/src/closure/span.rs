@@ -94,13 +94,16 @@ pub(super) struct Span {
 
 impl Span {
     /// The span of the monomials of degree `≤ options.degree` in `g_sym` (the generators
-    /// after the condition), and the `targets` (after the condition) over the same rows.
-    /// With `graded`, the weights under which every generator and target is homogeneous,
-    /// only the monomials of a target's weight are taken (see [`TargetWeights`]).
+    /// after the condition), and the `targets` (after the condition) over the same rows;
+    /// `formed` are the generators and targets as formed on the whole phase space, before the
+    /// condition, whose divisions are refused as theirs are. With `graded`, the weights under
+    /// which every generator and target is homogeneous, only the monomials of a target's
+    /// weight are taken (see [`TargetWeights`]).
     pub(super) fn new(
         system: &System,
         g_sym: Vec<Expr>,
         targets: &[Expr],
+        formed: &[&Expr],
         options: &ClosureOptions,
         graded: Option<&Scaling>,
     ) -> Result<Span, EngineError> {
@@ -130,19 +133,22 @@ impl Span {
             .collect();
         let mut parameters = fixed_parameters(system, options, g_sym.iter().chain(targets));
         let space = system.space();
-        // The condition's values enter the generators and the targets, but a term of them
-        // that divides by an atom may leave none (`c (a1 − a2) x` at `c = 1/(a1 − a2)` is
-        // `x`): the atoms they hold are used too, and refused where they vanish, as a
-        // search refuses them.
-        let condition_values = condition.into_iter().flat_map(Condition::values);
+        // The condition's values enter the generators and the targets, and these are formed
+        // before the condition, but a term of them that divides by an atom may leave none
+        // once set on it (`c (a1 − a2) x` at `c = 1/(a1 − a2)` is `x`; `(x p_y − y p_x)²/(a1 −
+        // a2)` at `y = 0, p_y = 0` is 0): the atoms they hold are used too, and refused where
+        // they vanish, as a search refuses them, since a function that divides by zero has
+        // no value there, on the condition's surface or off it.
+        let unseen =
+            (condition.into_iter().flat_map(Condition::values)).chain(formed.iter().copied());
         let used_atoms = space.denominator_atoms().iter().filter(|(atom, _)| {
             (g_sym.iter().chain(targets))
-                .chain(condition_values.clone())
+                .chain(unseen.clone())
                 .any(|e| e.contains(*atom))
         });
         let denominator_zero_at_one =
             off_vanishing_denominators(vars, &mut parameters, &options.fixed, used_atoms);
-        refuse_division_by_zero(space.denominator_atoms(), &parameters, condition_values)?;
+        refuse_division_by_zero(space.denominator_atoms(), &parameters, unseen)?;
         let fix = |e: &Expr| fix_parameters(e, &parameters);
         let g: Vec<Expr> = g_sym.iter().map(fix).collect::<Result<_, _>>()?;
         // A complex target too: in real generators it needs complex coefficients (`i L`), and
