@@ -46,7 +46,7 @@ fn garnier() -> Result<System, EngineError> {
         .momentum("p2")
         .parameter("a1")
         .parameter("a2")
-        .checked_denominator("a1 - a2")?
+        .denominator("a1 - a2")?
         .build()?;
     let space = PhaseSpace::new(&vars, &[("q1", "p1"), ("q2", "p2")])?;
     let h = Expr::parse(

@@ -945,7 +945,7 @@ impl<'a> Builder<'a> {
 
     /// The variables with the denominator atoms of `[phase_space] denominators` added, one at
     /// a time, each read in the variables with the atoms before it and declared by
-    /// [`VarsBuilder::checked_denominator`], as a program declares one. Refused: a text that
+    /// [`VarsBuilder::denominator`], as a program declares one. Refused: a text that
     /// does not read (placed in it), and what [`Expr::denominator_refusal`] refuses (zero, a
     /// single term, a polynomial that is not real, one that is a product of those declared
     /// before it).
@@ -964,7 +964,7 @@ impl<'a> Builder<'a> {
                 return Err(super::scope::expression_error(&self.source, &text, &e));
             }
             builder = builder
-                .checked_denominator(&text.value)
+                .denominator(&text.value)
                 .map_err(|e| self.error(ErrorKind::Expression, d.span(), e.to_string()))?;
             vars = builder
                 .clone()

@@ -800,7 +800,8 @@ mod tests {
             .momentum("p_x")
             .momentum("p_y")
             .parameter("c")
-            .denominator("x - y - c", "x − y − c", "x - y - c")
+            .denominator("x - y - c")
+            .unwrap()
             .build()
             .unwrap();
         let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")]).unwrap();

@@ -1259,9 +1259,12 @@ mod tests {
             .momentum("p_y")
             .parameter("a")
             .parameter("b")
-            .denominator("x - y", "x − y", "x - y")
-            .denominator("x - a", "x − a", "x - a")
-            .denominator("a - b", "a − b", "a - b")
+            .denominator("x - y")
+            .unwrap()
+            .denominator("x - a")
+            .unwrap()
+            .denominator("a - b")
+            .unwrap()
             .build()
             .unwrap();
         let space = crate::PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")]).unwrap();

@@ -852,7 +852,8 @@ mod tests {
             .coordinate("y")
             .momentum("p_x")
             .momentum("p_y")
-            .denominator("x - y", "x − y", "x - y")
+            .denominator("x - y")
+            .unwrap()
             .build()
             .unwrap();
         let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")]).unwrap();
@@ -885,7 +886,8 @@ mod tests {
             .coordinate("y")
             .momentum("p_x")
             .momentum("p_y")
-            .denominator("x - y", "x − y", "x - y");
+            .denominator("x - y")
+            .unwrap();
         let vars = builder.clone().radical("r", "x^2 + y^2").build().unwrap();
         let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")]).unwrap();
         assert_eq!(space.radicals().len(), 1);

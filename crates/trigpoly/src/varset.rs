@@ -886,13 +886,13 @@ impl VarsBuilder {
     /// use trigpoly::{AlgebraError, Expr, Vars};
     ///
     /// let builder = Vars::builder().coordinate("q1").parameter("a1").parameter("a2");
-    /// let vars = builder.clone().checked_denominator("a1 - a2")?.build()?;
+    /// let vars = builder.clone().denominator("a1 - a2")?.build()?;
     /// let e = Expr::parse(&vars, "q1/(2*(a2 - a1))").unwrap();
     /// assert_eq!(e.to_string(), "−q1/(2 (a1 − a2))");
     /// assert_eq!(e.to_latex(), r"-\frac{q_{1}}{2 (a_{1} - a_{2})}");
     /// // A single term divides exactly already; it is refused, saying why.
     /// let Err(AlgebraError::DenominatorRefused { denominator, message }) =
-    ///     builder.checked_denominator("2*a1")
+    ///     builder.denominator("2*a1")
     /// else {
     ///     panic!("2 a1 is a single term");
     /// };
@@ -900,7 +900,7 @@ impl VarsBuilder {
     /// assert!(message.starts_with("2 a1 is a single term"), "{message}");
     /// # Ok::<(), AlgebraError>(())
     /// ```
-    pub fn checked_denominator(self, polynomial: &str) -> Result<Self, AlgebraError> {
+    pub fn denominator(self, polynomial: &str) -> Result<Self, AlgebraError> {
         let refused = |message: String| AlgebraError::DenominatorRefused {
             denominator: format!("({polynomial})"),
             message,
@@ -912,16 +912,17 @@ impl VarsBuilder {
             return Err(refused(why));
         }
         let (ascii, unicode, latex) = value.denominator_forms();
-        Ok(self.denominator(&ascii, &unicode, &latex))
+        Ok(self.denominator_unchecked(&ascii, &unicode, &latex))
     }
     /// Declares a denominator atom ([`VarKind::Denominator`]) standing for the polynomial
     /// whose parseable ASCII form is `ascii` and whose text and LaTeX forms are `unicode` and
     /// `latex`, as given: nothing checks that the three agree, or that the polynomial may be
     /// a denominator, before [`Expr::denominator_atoms`](crate::Expr::denominator_atoms)
-    /// reads `ascii`. [`VarsBuilder::checked_denominator`] derives and checks them. Its names
-    /// are these in parentheses, `(x - y)`, which the parser never reads as a name but reads
-    /// back as `D` itself.
-    pub fn denominator(mut self, ascii: &str, unicode: &str, latex: &str) -> Self {
+    /// reads `ascii` (whose own refusals the tests reach through it).
+    /// [`VarsBuilder::denominator`] derives and checks them, and is the only way out of the
+    /// crate. Its names are these in parentheses, `(x - y)`, which the parser never reads as a
+    /// name but reads back as `D` itself.
+    pub(crate) fn denominator_unchecked(mut self, ascii: &str, unicode: &str, latex: &str) -> Self {
         self.vars.push(Variable {
             name: format!("({ascii})"),
             spelled_out: None,
@@ -1223,7 +1224,7 @@ mod tests {
             .coordinate("x")
             .momentum("p_x")
             .parameter("ω")
-            .checked_denominator("x - ω")
+            .denominator("x - ω")
             .unwrap()
             .build()
             .unwrap();

@@ -36,7 +36,7 @@ impl<C: Coefficient> Poly<C> {
     /// Why `value` cannot be declared a denominator, if it cannot: it is zero, a single term
     /// (division by it is exact already), not real, holds a radical or divides by a
     /// denominator declared before it, or is a product of those and the radicands times a
-    /// term. What [`VarsBuilder::checked_denominator`](crate::VarsBuilder::checked_denominator)
+    /// term. What [`VarsBuilder::denominator`](crate::VarsBuilder::denominator)
     /// and a system file's `denominators` refuse.
     pub fn denominator_refusal(value: &Self) -> Option<String> {
         let vars = &value.vars;
@@ -58,7 +58,7 @@ impl<C: Coefficient> Poly<C> {
             return Some(format!(
                 "the denominator {shown} has a radical in it: a denominator is a polynomial in \
                  the coordinates, momenta and parameters; divide by {shown} where it stands \
-                 instead, which superint does through its conjugates"
+                 instead, which a division does through its conjugates"
             ));
         }
         if let Some(atom) = vars.denominators().find(|&a| value.contains(a)) {
@@ -295,8 +295,8 @@ impl<C: Coefficient> Poly<C> {
     ///     .coordinate("x")
     ///     .coordinate("y")
     ///     .momentum("p_x")
-    ///     .denominator("x - y", "x − y", "x - y")
-    ///     .denominator("x + y", "x + y", "x + y")
+    ///     .denominator("x - y").unwrap()
+    ///     .denominator("x + y").unwrap()
     ///     .build()
     ///     .unwrap();
     /// let e = |s: &str| Expr::parse(&vars, s).unwrap().over_common_denominators().unwrap();
@@ -608,7 +608,7 @@ impl<C: Coefficient> Poly<C> {
     /// let vars = Vars::builder()
     ///     .coordinate("x")
     ///     .coordinate("y")
-    ///     .denominator("x - y", "x − y", "x - y")
+    ///     .denominator("x - y").unwrap()
     ///     .build()
     ///     .unwrap();
     /// let e = |s: &str| Expr::parse(&vars, s).unwrap();
@@ -694,8 +694,10 @@ mod tests {
             .coordinate("x")
             .coordinate("y")
             .coordinate("z")
-            .denominator("x - y", "x − y", "x - y")
-            .denominator("x - z", "x − z", "x - z")
+            .denominator("x - y")
+            .unwrap()
+            .denominator("x - z")
+            .unwrap()
             .build()
             .unwrap()
     }
@@ -768,7 +770,7 @@ mod tests {
     fn a_denominator_that_is_a_term_is_refused() {
         let vars = Vars::builder()
             .coordinate("x")
-            .denominator("2*x", "2x", "2 x")
+            .denominator_unchecked("2*x", "2x", "2 x")
             .build()
             .unwrap();
         let err = Expr::denominator_atoms(&vars).unwrap_err().to_string();
@@ -781,7 +783,7 @@ mod tests {
     fn a_denominator_that_does_not_read_is_placed_in_its_own_text() {
         let vars = Vars::builder()
             .coordinate("x")
-            .denominator("x - ", "x − ", "x - ")
+            .denominator_unchecked("x - ", "x − ", "x - ")
             .build()
             .unwrap();
         let err = Expr::denominator_atoms(&vars).unwrap_err().to_string();
@@ -800,8 +802,9 @@ mod tests {
         let vars = Vars::builder()
             .coordinate("x")
             .coordinate("y")
-            .denominator("x - y", "x − y", "x - y")
-            .denominator("x + 1/(x - y)", "x + 1/(x − y)", "x + 1/(x - y)")
+            .denominator("x - y")
+            .unwrap()
+            .denominator_unchecked("x + 1/(x - y)", "x + 1/(x − y)", "x + 1/(x - y)")
             .build()
             .unwrap();
         let err = Expr::denominator_atoms(&vars).unwrap_err().to_string();
@@ -818,7 +821,8 @@ mod tests {
         let vars = Vars::builder()
             .coordinate("x")
             .coordinate("y")
-            .denominator("x^2 + y^2", "x² + y²", "x^{2} + y^{2}")
+            .denominator("x^2 + y^2")
+            .unwrap()
             .build()
             .unwrap();
         let e = |s: &str| Expr::parse(&vars, s).unwrap();

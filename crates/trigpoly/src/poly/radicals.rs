@@ -759,7 +759,8 @@ mod tests {
             "{refused}"
         );
         let declared = builder
-            .denominator("x^2 + y^2 - 1", "x² + y² − 1", "x^2 + y^2 - 1")
+            .denominator("x^2 + y^2 - 1")
+            .unwrap()
             .build()
             .unwrap();
         let e = |s: &str| Expr::parse(&declared, s).unwrap();

@@ -514,7 +514,7 @@ impl Point {
     /// let vars = Vars::builder()
     ///     .coordinate("x")
     ///     .coordinate("y")
-    ///     .denominator("x - y", "x − y", "x - y")
+    ///     .denominator("x - y").unwrap()
     ///     .build()
     ///     .unwrap();
     /// let atoms = Expr::denominator_atoms(&vars).unwrap();

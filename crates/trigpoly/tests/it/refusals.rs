@@ -88,22 +88,23 @@ fn a_refused_declaration_names_what_was_declared() {
         matches!(&err, AlgebraError::RadicalRefused { radicals, .. } if radicals == &["s"]),
         "{err:?}"
     );
-    let term = Vars::builder()
+    let err = Vars::builder()
         .coordinate("x")
-        .denominator("2*x", "2x", "2 x")
-        .build()
-        .unwrap();
-    let err = Expr::denominator_atoms(&term).unwrap_err();
+        .denominator("2*x")
+        .unwrap_err();
     assert_eq!(
         err,
         AlgebraError::DenominatorRefused {
             denominator: "(2*x)".into(),
-            message: "the denominator (2*x) is zero or a single term, not a sum".into(),
+            message: "2x is a single term: division by it is exact already, so declare only \
+                      sums (such as \"x - y\") as denominators"
+                .into(),
         }
     );
-    assert_eq!(
-        err.to_string(),
-        "the denominator (2*x) is zero or a single term, not a sum"
+    assert!(
+        err.to_string()
+            .starts_with("2x is a single term: division by it is exact"),
+        "{err}"
     );
 }
 
@@ -300,12 +301,13 @@ fn misuse_says_which_counts_differ() {
 }
 
 /// A denominator declared in code by its polynomial alone
-/// ([`trigpoly::VarsBuilder::checked_denominator`]): its printed forms are derived from it, so
-/// they agree with what it reads as (`(a2 − a1)` declared as `a2 - a1` prints so, and reads
-/// back), and a polynomial that cannot be one is refused with its text and the reason, as a
-/// system file's is: one that names a variable not declared before it, a single term, one
-/// that is not real, and one that a denominator declared before it already divides (itself
-/// again, or its square).
+/// ([`trigpoly::VarsBuilder::denominator`]): its printed forms are derived from it, so
+/// they agree with what it reads as (`a2 - a1` prints as its normal form, `(−a1 + a2)`, and
+/// reads back), and a polynomial that cannot be one is refused with its text and the reason,
+/// as a system file's is: one that names a variable not declared before it, a single term, one
+/// that is not real, one with a radical in it (the message, a library's, names no program),
+/// and one that a denominator declared before it already divides (itself again, or its
+/// square).
 #[test]
 fn a_denominator_declared_in_code_is_checked() {
     let builder = || {
@@ -314,11 +316,7 @@ fn a_denominator_declared_in_code_is_checked() {
             .parameter("a1")
             .parameter("a2")
     };
-    let vars = builder()
-        .checked_denominator("a2 - a1")
-        .unwrap()
-        .build()
-        .unwrap();
+    let vars = builder().denominator("a2 - a1").unwrap().build().unwrap();
     let atom = vars.denominators().next().unwrap();
     assert_eq!(vars.variable(atom).unicode(), "(−a1 + a2)");
     let e = Expr::parse(&vars, "q/(a1 - a2)").unwrap();
@@ -326,7 +324,7 @@ fn a_denominator_declared_in_code_is_checked() {
     assert_eq!(Expr::parse(&vars, &e.to_ascii()).unwrap(), e);
     assert_eq!(Expr::denominator_atoms(&vars).unwrap().len(), 1);
 
-    let refusal = |b: trigpoly::VarsBuilder, text: &str| match b.checked_denominator(text) {
+    let refusal = |b: trigpoly::VarsBuilder, text: &str| match b.denominator(text) {
         Err(AlgebraError::DenominatorRefused {
             denominator,
             message,
@@ -350,7 +348,13 @@ fn a_denominator_declared_in_code_is_checked() {
         refusal(builder(), "a1 + i*a2"),
         "the denominator a1 + i a2 is not real"
     );
-    let declared = || builder().checked_denominator("a1 - a2").unwrap();
+    let radical = refusal(builder().radical("r", "q^2 + 1"), "r + q");
+    assert!(
+        radical.starts_with("the denominator q + r has a radical in it")
+            && radical.ends_with("divide by q + r where it stands instead, which a division does through its conjugates"),
+        "{radical}"
+    );
+    let declared = || builder().denominator("a1 - a2").unwrap();
     for again in ["a1 - a2", "(a1 - a2)^2", "a2 - a1"] {
         assert!(
             refusal(declared(), again)
