@@ -217,8 +217,14 @@ pub struct ExceptionalFacts {
     /// The polynomial in the parameter whose roots, not rational, were not examined, in
     /// ASCII; `None` when none is left.
     pub unexamined: Option<String>,
+    /// How many of its roots are real (none: no other real value has more integrals in the
+    /// space); `None` when none is left.
+    pub unexamined_real_roots: Option<usize>,
     /// The largest block's minor: its size and the degree of its determinant.
     pub largest_minor: (usize, usize),
+    /// Whether `0`, a root of a determinant, was left out: `H` holds a negative power of the
+    /// parameter and has no value there.
+    pub zero_left_out: bool,
 }
 
 /// A value of the parameter searched at, the dimension of the space of integrals there and
@@ -246,22 +252,27 @@ impl ValueFacts {
 }
 
 impl ExceptionalFacts {
-    /// The facts, as [`ExceptionalFacts`]' fields say.
+    /// The facts, as [`ExceptionalFacts`]' fields say (`unexamined` the polynomial and how
+    /// many of its roots are real).
     pub fn new(
         parameter: String,
         generic: ValueFacts,
         values: Vec<ValueFacts>,
         not_exceptional: Vec<String>,
-        unexamined: Option<String>,
+        unexamined: Option<(String, usize)>,
         largest_minor: (usize, usize),
+        zero_left_out: bool,
     ) -> Self {
+        let (unexamined, unexamined_real_roots) = unexamined.unzip();
         ExceptionalFacts {
             parameter,
             generic,
             values,
             not_exceptional,
             unexamined,
+            unexamined_real_roots,
             largest_minor,
+            zero_left_out,
         }
     }
 }

@@ -7,13 +7,15 @@ use std::path::{Path, PathBuf};
 use super::input::load_system;
 use anyhow::{anyhow, bail, Context};
 use brackets::search::{
-    BesideLevelSet, SearchOptions, SearchSpace, DEFAULT_MAX_MINOR, DEFAULT_MAX_PRODUCTS,
+    BesideLevelSet, SearchOptions, SearchResult, SearchSpace, DEFAULT_MAX_MINOR,
+    DEFAULT_MAX_PRODUCTS,
 };
 use brackets::{EngineError, System};
 use clap::Args;
 use superint::discovery::{
-    builtin_system, builtin_system_refused, command_line_search_report, exceptional_values_report,
-    parse_condition_checked, parse_fixed, parse_known, parse_symbolic, ListRefusal,
+    builtin_system, builtin_system_refused, command_line_report_of, command_line_search_report,
+    exceptional_values_report, parse_condition_checked, parse_fixed, parse_known, parse_symbolic,
+    ListRefusal,
 };
 use superint::render::{render, Format};
 use superint::report::{with_article, Report};
@@ -131,9 +133,10 @@ pub struct SearchArgs {
     /// there, at a root of a determinant computed exactly. Each rational root is searched at
     /// and shown as --when 'C = VALUE' shows it, those with more integrals told apart; the
     /// polynomial whose irrational roots were not examined is printed. The other parameters
-    /// are fixed (--fix, 1 by default). Not with --symbolic, --on, --new-only or a --when that
-    /// sets the parameter.
-    #[arg(long, value_name = "PARAM", conflicts_with_all = ["symbolic", "on", "new_only"])]
+    /// are fixed (--fix, 1 by default). With --on, on that level set (its polynomial without
+    /// the parameter), each value searched at as --fix shows it. Not with --symbolic,
+    /// --new-only or a --when that sets the parameter.
+    #[arg(long, value_name = "PARAM", conflicts_with_all = ["symbolic", "new_only"])]
     find_values: Option<String>,
     /// With --find-values, stop with an error at a block of the equations whose minor has more
     /// than N rows (default 250: its determinant takes some 10 s at 250 rows, its time growing about as the fourth power of N).
@@ -854,24 +857,43 @@ fn find_values(
             e,
         )
     };
-    let found =
-        brackets::search::exceptional_values(system, options, parameter).map_err(refused)?;
-    let values = std::iter::once(&found.generic_value).chain(found.values.iter().map(|v| &v.value));
-    let mut searches = Vec::new();
-    for value in values {
-        let when = match &a.when {
-            Some(w) => format!("{name} = {value}, {w}"),
-            None => format!("{name} = {value}"),
-        };
+    let candidates =
+        brackets::search::exceptional_candidates(system, options, parameter).map_err(refused)?;
+    let file = match subject {
+        Subject::File(f) => Some(f.as_ref()),
+        Subject::Builtin(..) => None,
+    };
+    // Each candidate searched once, as its report shows it: under `--when 'C = VALUE'` (with
+    // `a`'s own after), or on a level set, which takes no condition, with C fixed there, as
+    // `--fix` does. The engine keeps those with more integrals; their options are kept here
+    // for their reports.
+    let mut searched: Vec<(trigpoly::Rational, SearchOptions)> = Vec::new();
+    let found = candidates.confirm(|value| -> anyhow::Result<SearchResult> {
         let mut at = options.clone();
-        at.condition = subject.condition(Some(&when))?;
-        let file = match subject {
-            Subject::File(f) => Some(f.as_ref()),
-            Subject::Builtin(..) => None,
-        };
-        let (report, _) =
-            command_line_search_report(file, &subject.the_name(), system, &at, format)
-                .map_err(refused)?;
+        match &options.on {
+            Some(_) => at.fixed.push((parameter, value.clone())),
+            None => {
+                let when = match &a.when {
+                    Some(w) => format!("{name} = {value}, {w}"),
+                    None => format!("{name} = {value}"),
+                };
+                at.condition = subject.condition(Some(&when))?;
+            }
+        }
+        let r = brackets::search::search(system, &at).map_err(refused)?;
+        searched.push((value.clone(), at));
+        Ok(r)
+    })?;
+    let shown = std::iter::once((&found.generic_value, &found.generic))
+        .chain(found.values.iter().map(|v| (&v.value, &v.found)));
+    let mut searches = Vec::new();
+    for (value, r) in shown {
+        let at = (searched.iter())
+            .find(|(v, _)| v == value)
+            .map(|(_, at)| at)
+            .expect("each value confirmed was searched");
+        let report = command_line_report_of(file, &subject.the_name(), system, at, format, r)
+            .map_err(refused)?;
         searches.push(report);
     }
     let mut report = exceptional_values_report(

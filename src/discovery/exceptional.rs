@@ -82,18 +82,22 @@ pub fn exceptional_values_report(
             listed(&roots)
         )));
     }
-    if found.no_value_at_zero {
+    // Said only where 0 was a root: elsewhere it would explain a value nobody was shown.
+    if found.zero_left_out {
         entries.push(Entry::Text(format!(
-            "`{t} = 0` is no value: H, with a negative power of `{t}`, has none there (each \
-             equation was multiplied by the power of `{t}` that makes it a polynomial, which \
-             changes its solutions at no other value)."
+            "`{t} = 0`, a root of the determinants, is no value: H, with a negative power of \
+             `{t}`, has none there (each equation was multiplied by the power of `{t}` that \
+             makes it a polynomial, which changes its solutions at no other value)."
         )));
     }
     let unexamined = found.unexamined_in(vars);
-    entries.push(Entry::Text(match &unexamined {
-        Some(p) => {
+    let real_roots = unexamined
+        .as_ref()
+        .map(|_| found.unexamined.real_root_count());
+    entries.push(Entry::Text(match (&unexamined, real_roots) {
+        (Some(p), Some(real)) => {
             let shown = unexamined_shown(p, found.unexamined.degree().unwrap_or(0), whole, caller);
-            match found.unexamined.real_root_count() {
+            match real {
                 0 => format!(
                     "The determinants' other roots, those of {shown}, are none of them real: no \
                      other real value of `{t}` has more integrals in this space (the complex ones \
@@ -105,7 +109,7 @@ pub fn exceptional_values_report(
                 ),
             }
         }
-        None => format!("Every root of the determinants is rational: no other value of `{t}` has more integrals in this space."),
+        _ => format!("Every root of the determinants is rational: no other value of `{t}` has more integrals in this space."),
     }));
     if facts {
         let value = |k: usize, v: &trigpoly::Rational, r: &brackets::search::SearchResult| {
@@ -119,8 +123,10 @@ pub fn exceptional_values_report(
                     .map(|(k, v)| value(k + 1, &v.value, &v.found))
                     .collect(),
                 found.spurious.iter().map(ToString::to_string).collect(),
-                unexamined.as_ref().map(|p| p.render(Style::Ascii)),
+                (unexamined.as_ref().zip(real_roots))
+                    .map(|(p, real)| (p.render(Style::Ascii), real)),
                 found.largest_minor,
+                found.zero_left_out,
             ),
         )));
     }

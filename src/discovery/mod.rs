@@ -36,7 +36,8 @@ pub use input::{
     BUILTIN_SYSTEMS,
 };
 pub use search::{
-    command_line_search_report, complex_form, file_search_report, search_report, search_report_for,
+    command_line_report_of, command_line_search_report, complex_form, file_search_report,
+    search_report, search_report_for,
 };
 
 use brackets::search::parameter_text;

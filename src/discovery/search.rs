@@ -664,18 +664,35 @@ pub fn command_line_search_report(
     options: &SearchOptions,
     format: Format,
 ) -> Result<(Report, SearchResult), EngineError> {
+    let start = Instant::now();
+    let r = search(system, options)?;
+    let mut report = command_line_report_of(file, name, system, options, format, &r)?;
+    report.seconds = start.elapsed().as_secs_f64();
+    Ok((report, r))
+}
+
+/// [`command_line_search_report`] of the search `r` already run with `options`: the report
+/// of what it found, as that search's, with no search again (`superint search
+/// --find-values` shows the searches that confirmed its values so). Its time is that of the
+/// report alone.
+pub fn command_line_report_of(
+    file: Option<&LoadedSystem>,
+    name: &str,
+    system: &System,
+    options: &SearchOptions,
+    format: Format,
+    r: &SearchResult,
+) -> Result<Report, EngineError> {
     let restate = file.map(|file| Restate {
         file,
         condition: options.condition.as_ref(),
     });
     let facts = format == Format::Json;
-    search_report_with(
-        name,
-        system,
+    report_of(
+        (name, system),
         options,
-        Caller::CommandLine,
-        restate.as_ref(),
-        facts,
+        (Caller::CommandLine, restate.as_ref(), facts),
+        r,
     )
 }
 
@@ -713,14 +730,28 @@ fn search_report_with(
 ) -> Result<(Report, SearchResult), EngineError> {
     let start = Instant::now();
     let r = search(system, options)?;
+    let mut report = report_of((name, system), options, (caller, restate, facts), &r)?;
+    report.seconds = start.elapsed().as_secs_f64();
+    Ok((report, r))
+}
+
+/// The report of the search `r` of `system`, named `name`, run with `options`, as
+/// [`search_report_with`] says (its time that of the report alone).
+fn report_of(
+    (name, system): (&str, &System),
+    options: &SearchOptions,
+    (caller, restate, facts): (Caller, Option<&Restate<'_>>, bool),
+    r: &SearchResult,
+) -> Result<Report, EngineError> {
+    let start = Instant::now();
     // The file's families, whose names the labels' letters avoid as the functions'.
     let families: Vec<&str> = (restate.iter())
         .flat_map(|r| r.file.family_names())
         .collect();
-    let shared = Shared::new(system, &families, options, &r, caller, facts);
+    let shared = Shared::new(system, &families, options, r, caller, facts);
     let sections = vec![
-        shared.search_section(system, options, &r)?,
-        shared.basis_section(&r, restate)?,
+        shared.search_section(system, options, r)?,
+        shared.basis_section(r, restate)?,
     ];
     let mut when = r
         .condition
@@ -730,17 +761,14 @@ fn search_report_with(
     if let Some(on) = &r.on {
         when += &format!(" on the level set `{}`", level_set_shown(on));
     }
-    Ok((
-        Report {
-            title: format!("Integrals of {}{when}", name),
-            subtitle: String::new(),
-            sections,
-            summary: SummaryKind::Claims,
-            seconds: start.elapsed().as_secs_f64(),
-            caller,
-        },
-        r,
-    ))
+    Ok(Report {
+        title: format!("Integrals of {}{when}", name),
+        subtitle: String::new(),
+        sections,
+        summary: SummaryKind::Claims,
+        seconds: start.elapsed().as_secs_f64(),
+        caller,
+    })
 }
 
 /// What the two sections of a search's report share: where the integrals hold, the names of

@@ -129,8 +129,11 @@
 //!                   with the section of the search there), "not_exceptional": [values] (the
 //!                   rational roots of the determinants where the search found no more),
 //!                   "unexamined": ascii | null (the polynomial in the parameter whose
-//!                   irrational and complex roots were not examined), "largest_minor":
-//!                   { "size", "degree" } } ]   (only for `search --find-values`)
+//!                   irrational and complex roots were not examined),
+//!                   "unexamined_real_roots": int | null (how many of its roots are real),
+//!                   "largest_minor": { "size", "degree" }, "zero_left_out": bool (0, a root,
+//!                   left out: H has a negative power of the parameter and no value there) } ]
+//!                   (only for `search --find-values`)
 //!   "warnings": [ { "section", "file", "line", "column", "message" } ]   (only where there
 //!                   are any: a name of the section's file run together and read as a
 //!                   product that may not have been meant, `Lxx` beside a function `Lx`;
@@ -622,7 +625,9 @@ fn exceptional_values(f: &ExceptionalFacts, section: u32) -> Value {
         "values": f.values.iter().map(value).collect::<Vec<_>>(),
         "not_exceptional": f.not_exceptional,
         "unexamined": f.unexamined,
+        "unexamined_real_roots": f.unexamined_real_roots,
         "largest_minor": { "size": f.largest_minor.0, "degree": f.largest_minor.1 },
+        "zero_left_out": f.zero_left_out,
     })
 }
 

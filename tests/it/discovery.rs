@@ -1434,7 +1434,8 @@ fn the_heavy_top_has_kovalevskaya_s_integral_at_i3_one_half_found_from_h_alone()
              (section 6).",
             "Roots of the determinants where the search finds no more integrals: I3 = 1/4, \
              I3 = 3/2, I3 = 2 and I3 = 4.",
-            "I3 = 0 is no value: H, with a negative power of I3, has none there",
+            "I3 = 0, a root of the determinants, is no value: H, with a negative power of I3, \
+             has none there",
             "J11 = M1⁴ + 2 M1² M2² + 4c M1² γ1 + 8c M1 M2 γ2 + M2⁴ − 4c M2² γ1 − 4c² γ3²",
             "= −4c² Γ + K",
         ],

@@ -119,14 +119,15 @@ fn oscillator(name: &str, potential: &str) -> std::path::PathBuf {
 fn an_irrational_value_is_reported_with_its_polynomial_not_claimed() {
     // Isotropic where a² = 2: the value √2 is not rational.
     let file = oscillator("irrational.toml", "(x^2 + (a^2 - 1)*y^2)/2");
-    let text = normalize(&superint_ok(&[
+    let args = [
         "search",
         file.to_str().unwrap(),
         "--find-values",
         "a",
         "--positions-degree",
         "2",
-    ]));
+    ];
+    let text = normalize(&superint_ok(&args));
     assert!(text.contains("More integrals at a = −1"), "{text}");
     // Short: whole, with its degree.
     assert!(
@@ -141,6 +142,36 @@ fn an_irrational_value_is_reported_with_its_polynomial_not_claimed() {
         text.contains("which are not rational (8 of them real): not examined"),
         "{text}"
     );
+    // JSON carries the count beside the polynomial.
+    let json = superint_json(&args);
+    let found = &json["exceptional_values"][0];
+    assert_eq!(found["unexamined_real_roots"], 8);
+    assert_eq!(found["zero_left_out"], false);
+}
+
+/// Where every root of the polynomial left is complex, JSON says none is real (Hénon–Heiles at
+/// B = 16: 21C² − 12C + 272); where every root is rational, it has no count.
+#[test]
+fn the_json_counts_the_real_roots_of_the_unexamined_polynomial() {
+    let json = superint_json(&[
+        "search",
+        HENON_HEILES,
+        "--find-values",
+        "C",
+        "--fix",
+        "B=16",
+        "--momenta-degree",
+        "4",
+        "--positions-degree",
+        "6",
+        "--trig-degree",
+        "0",
+    ]);
+    let found = &json["exceptional_values"][0];
+    assert_eq!(found["unexamined"], "21*C^2 - 12*C + 272");
+    assert_eq!(found["unexamined_real_roots"], 0);
+    let rational = superint_json(&[&HENON_HEILES_VALUES[..], &["4"]].concat());
+    assert!(rational["exceptional_values"][0]["unexamined_real_roots"].is_null());
 }
 
 /// A long polynomial whose roots were not examined (the anisotropic oscillator's at degree 6,
@@ -199,8 +230,35 @@ fn what_find_values_does_not_take_is_refused() {
     );
     let symbolic = search(&["C", "--symbolic", "A"]);
     assert!(symbolic.contains("cannot be used with"), "{symbolic}");
-    let on = search(&["C", "--on", "x = 0"]);
-    assert!(on.contains("cannot be used with"), "{on}");
+    // A level set whose polynomial holds the parameter solved for: taken at fixed values.
+    let top = |on: &str| {
+        superint_refused(&[
+            "search",
+            "systems/heavy-top.toml",
+            "--find-values",
+            "I3",
+            "--on",
+            on,
+        ])
+    };
+    let on = top("A = I3");
+    assert!(
+        on.contains("does not take a level set whose polynomial holds I3, A = I3"),
+        "{on}"
+    );
+    assert!(on.contains("write the level set without I3"), "{on}");
+    // Beside a level set, a condition is refused as an ordinary search refuses it.
+    let when = superint_refused(&[
+        "search",
+        "systems/heavy-top.toml",
+        "--find-values",
+        "I3",
+        "--on",
+        "A = 0",
+        "--when",
+        "c = 2",
+    ]);
+    assert!(when.contains("--on does not take --when"), "{when}");
     let when = search(&["C", "--when", "C = 2"]);
     assert!(when.contains("a condition that sets C"), "{when}");
     let fixed = search(&["C", "--fix", "C=2"]);
@@ -266,6 +324,150 @@ fn the_heavy_top_has_one_more_integral_at_the_kovalevskaya_ratio_i1_equal_i2_equ
         not_exceptional.iter().all(|r| r != "0"),
         "{not_exceptional:?}"
     );
+    // 0 was a root, left out: JSON and the text say so.
+    assert_eq!(found["zero_left_out"], true);
+    let text = normalize(&superint_ok(&[
+        "search",
+        "systems/heavy-top.toml",
+        "--find-values",
+        "I3",
+        "--poisson-degree",
+        "2",
+    ]));
+    assert!(
+        text.contains("I3 = 0, a root of the determinants, is no value"),
+        "{text}"
+    );
+}
+
+/// `H/a` has the integrals of `H` at every `a ≠ 0`: each equation times `a` is constant, no
+/// determinant has a root, and nothing is said of `a = 0` (JSON: not left out).
+#[test]
+fn zero_is_said_to_be_no_value_only_where_it_was_a_root() {
+    let file = scratch_text(
+        "exceptional-values",
+        "scaled.toml",
+        "name = \"scaled\"\nhamiltonian = \"(p_x^2 + p_y^2 + x^2 + 4*y^2)/(2*a)\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\"]\n",
+    );
+    let args = ["search", file.to_str().unwrap(), "--find-values", "a"];
+    let text = normalize(&superint_ok(&args));
+    assert!(
+        text.contains("No rational value of a has more integrals."),
+        "{text}"
+    );
+    assert!(!text.contains("a = 0"), "{text}");
+    let json = superint_json(&args);
+    assert_eq!(json["exceptional_values"][0]["zero_left_out"], false);
+}
+
+/// The heavy top's `H` alone, on the area integral's level `A = M·γ = 0`: the
+/// Goryachev–Chaplygin top's cubic integral is found at `I3 = 1/4` (and the spherical top's
+/// at `I3 = 1`), each value's dimension that of the ordinary search there, `--fix I3=VALUE
+/// --on 'A = 0'`, and more than the generic value's.
+#[test]
+fn the_heavy_top_on_the_area_level_has_the_goryachev_chaplygin_cubic_at_i1_equal_i2_equal_4_i3() {
+    let on = ["--on", "A = 0", "--poisson-degree", "3"];
+    let find = [
+        &["search", "systems/heavy-top.toml", "--find-values", "I3"][..],
+        &on,
+    ]
+    .concat();
+    let json = superint_json(&find);
+    assert_eq!(json["summary"]["all_proved"], true);
+    let found = &json["exceptional_values"][0];
+    let generic = found["generic"]["dimension"].as_u64().unwrap();
+    let values: Vec<(&str, u64)> = (found["values"].as_array().unwrap().iter())
+        .map(|v| {
+            (
+                v["value"].as_str().unwrap(),
+                v["dimension"].as_u64().unwrap(),
+            )
+        })
+        .collect();
+    assert!(values.iter().any(|(v, _)| *v == "1/4"), "{values:?}");
+    let dimension_at = |value: &str| {
+        let fix = format!("I3={value}");
+        let plain = [
+            &["search", "systems/heavy-top.toml", "--fix", &fix][..],
+            &on,
+        ]
+        .concat();
+        superint_json(&plain)["searches"][0]["dimension"]
+            .as_u64()
+            .unwrap()
+    };
+    assert_eq!(
+        dimension_at(found["generic"]["value"].as_str().unwrap()),
+        generic
+    );
+    for (value, dimension) in &values {
+        assert!(*dimension > generic, "{value}");
+        assert_eq!(dimension_at(value), *dimension, "{value}");
+    }
+    // The cubic, its bracket with H a multiple of M·γ, in the search at 1/4.
+    let text = normalize(&superint_ok(&find));
+    assert!(text.contains("At I3 = 1/4: Basis"), "{text}");
+    assert!(
+        text.contains("= Q4 (M1 γ1 + M2 γ2 + M3 γ3) at I3 = 1/4, c = 1"),
+        "{text}"
+    );
+}
+
+/// On a level set where no value of the parameter has more integrals (the y oscillator's
+/// energy level, kept for every a; a x only shifts the x oscillator), none is found.
+#[test]
+fn a_level_set_where_no_value_has_more_integrals_finds_none() {
+    let file = oscillator("shifted.toml", "(x^2 + 4*y^2)/2 + a*x");
+    let text = normalize(&superint_ok(&[
+        "search",
+        file.to_str().unwrap(),
+        "--find-values",
+        "a",
+        "--on",
+        "p_y^2 + 4*y^2 = 4",
+        "--positions-degree",
+        "2",
+    ]));
+    assert!(
+        text.contains("No rational value of a has more integrals."),
+        "{text}"
+    );
+    assert!(text.contains("on the level set"), "{text}");
+}
+
+/// Each value's search, shown as `--when 'C = VALUE'` shows it, is the engine's own, searched
+/// once: its sections read as that ordinary search's.
+#[test]
+fn each_values_search_reads_as_the_ordinary_search_there() {
+    let found = henon_heiles("text");
+    let at_two = found
+        .split_once("At C = 2: Search")
+        .expect("the search at C = 2")
+        .1;
+    let plain = superint_ok(&[
+        "search",
+        HENON_HEILES,
+        "--when",
+        "C = 2",
+        "--fix",
+        "A=1,B=1",
+        "--momenta-degree",
+        "2",
+        "--positions-degree",
+        "4",
+        "--no-timings",
+    ]);
+    let search = plain.split_once("1  Search").expect("its search").1;
+    // Without the section titles, numbered apart, and the summaries, which count apart.
+    let body = |t: &str| {
+        t.lines()
+            .filter(|l| !l.starts_with(|c: char| c.is_ascii_digit() || c == '═'))
+            .map(str::to_string)
+            .collect::<Vec<_>>()
+    };
+    assert!(body(search).iter().any(|l| l.contains("I3 = 4x p_x p_y")));
+    assert_eq!(body(at_two), body(search));
 }
 
 /// `--find-values parameter` of the top in `file` at Poisson degree 4, every integral proved:

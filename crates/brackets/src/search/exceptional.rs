@@ -57,8 +57,11 @@ use crate::modular::{big_mod, inverse_mod, mul_mod, previous_prime, PRIME};
 use crate::system::System;
 use crate::univariate::IntPoly;
 
-use super::problem::{blocks, canonical};
-use super::{fixed_search_problem, search, FixedSearch, SearchOptions, SearchResult};
+use super::problem::{blocks, canonical, Problem};
+use super::{
+    fixed_search_problem, refuse_beside_level_set, search, FixedSearch, OnLevel, SearchOptions,
+    SearchResult,
+};
 
 /// What [`exceptional_values`] found.
 #[derive(Debug)]
@@ -80,9 +83,9 @@ pub struct ExceptionalValues {
     pub unexamined: IntPoly,
     /// The largest block's minor: its size and the degree of its determinant.
     pub largest_minor: (usize, usize),
-    /// Whether `H` holds a negative power of the parameter: then `0`, where `H` has no value,
-    /// was no candidate, whether or not a determinant vanishes there.
-    pub no_value_at_zero: bool,
+    /// Whether `0` was a root of a determinant left out as no candidate: `H` holds a negative
+    /// power of the parameter and has no value there.
+    pub zero_left_out: bool,
 }
 
 impl ExceptionalValues {
@@ -103,26 +106,92 @@ pub struct ExceptionalValue {
     pub found: SearchResult,
 }
 
+/// The candidates for the exceptional values, before any search at them
+/// ([`exceptional_candidates`]): the determinants' rational roots, a generic value, and what
+/// was not examined. [`Candidates::confirm`] searches at each.
+#[derive(Debug)]
+pub struct Candidates {
+    /// The parameter solved for.
+    pub parameter: Var,
+    /// A generic value: no root of any block's determinant.
+    pub generic_value: Rational,
+    /// The rational roots of the determinants, increasing (without `0` where `H` has no
+    /// value there).
+    pub roots: Vec<Rational>,
+    /// As [`ExceptionalValues::unexamined`].
+    pub unexamined: IntPoly,
+    /// As [`ExceptionalValues::largest_minor`].
+    pub largest_minor: (usize, usize),
+    /// As [`ExceptionalValues::zero_left_out`].
+    pub zero_left_out: bool,
+}
+
+impl Candidates {
+    /// The exceptional values among the roots: `search_at` searches at the generic value, then
+    /// at each root, which is kept where its search finds more integrals than the generic
+    /// one. The search must be exact at the value it is given, as [`exceptional_values`]'
+    /// (the options with the parameter fixed there) is; a caller that shows each search may
+    /// run its own and keep what it shows, each value searched once.
+    pub fn confirm<E>(
+        self,
+        mut search_at: impl FnMut(&Rational) -> Result<SearchResult, E>,
+    ) -> Result<ExceptionalValues, E> {
+        let generic = search_at(&self.generic_value)?;
+        let mut values = Vec::new();
+        let mut spurious = Vec::new();
+        for value in self.roots {
+            let found = search_at(&value)?;
+            if found.basis.len() > generic.basis.len() {
+                values.push(ExceptionalValue { value, found });
+            } else {
+                spurious.push(value);
+            }
+        }
+        Ok(ExceptionalValues {
+            parameter: self.parameter,
+            generic_value: self.generic_value,
+            generic,
+            values,
+            spurious,
+            unexamined: self.unexamined,
+            largest_minor: self.largest_minor,
+            zero_left_out: self.zero_left_out,
+        })
+    }
+}
+
 /// The values of `parameter` at which the space of `options` holds more integrals than at a
-/// generic value, the other parameters at `options`' fixed values (1 by default). Refused:
-/// a parameter that is not one of `H`'s, or is fixed, kept symbolic or set by the condition;
-/// parameters kept symbolic; a level set; a parameter in a declared denominator or radical
-/// (a negative power of it in `H` is taken, and `0` is then no candidate);
-/// and, as a limit ([`EngineLimit::MinorRows`]), a block whose minor has more rows than
-/// [`SearchOptions::max_minor`].
+/// generic value, the other parameters at `options`' fixed values (1 by default), on
+/// `options`' level set if it has one: [`exceptional_candidates`], each confirmed by the
+/// search with the parameter fixed at it.
 pub fn exceptional_values(
     system: &System,
     options: &SearchOptions,
     parameter: Var,
 ) -> Result<ExceptionalValues, EngineError> {
+    exceptional_candidates(system, options, parameter)?.confirm(|value| {
+        let mut options = options.clone();
+        options.fixed.push((parameter, value.clone()));
+        search(system, &options)
+    })
+}
+
+/// The candidates for the values of `parameter` at which the space of `options` holds more
+/// integrals: the rational roots of the determinants, and a generic value. Refused:
+/// a parameter that is not one of `H`'s, or is fixed, kept symbolic or set by the condition;
+/// parameters kept symbolic; a level set whose polynomial holds the parameter (a level set is
+/// taken at the fixed values of its parameters) and what a search on a level set does not
+/// take; a parameter in a declared denominator or radical
+/// (a negative power of it in `H` is taken, and `0` is then no candidate);
+/// and, as a limit ([`EngineLimit::MinorRows`]), a block whose minor has more rows than
+/// [`SearchOptions::max_minor`].
+pub fn exceptional_candidates(
+    system: &System,
+    options: &SearchOptions,
+    parameter: Var,
+) -> Result<Candidates, EngineError> {
     refuse(system, options, parameter)?;
-    let kept = SearchOptions {
-        symbolic: vec![parameter],
-        space: options.space.parameters_degree(0),
-        new_only: false,
-        ..options.clone()
-    };
-    let FixedSearch { problem, .. } = fixed_search_problem(system, &kept)?;
+    let problem = problem_with_parameter_kept(system, options, parameter)?;
     let images = (0..problem.unknowns.len())
         .map(|j| problem.image(&problem.expr(j, &Rational::one())?))
         .collect::<Result<Vec<Expr>, EngineError>>()?;
@@ -171,6 +240,7 @@ pub fn exceptional_values(
     // With a negative power of `t` in H, `t = 0` is no value of H: not a candidate.
     let no_value_at_zero =
         (system.hamiltonian().terms().into_iter()).any(|term| term.exponent(parameter) < 0);
+    let zero_left_out = no_value_at_zero && roots.iter().any(Rational::is_zero);
     if no_value_at_zero {
         roots.retain(|r| !r.is_zero());
     }
@@ -180,32 +250,46 @@ pub fn exceptional_values(
         .map(|k| Rational::new(2 * k + 5, 1))
         .find(|v| determinants.iter().all(|d| !d.vanishes_at(v)))
         .expect("a polynomial has finitely many roots");
-    let at = |value: &Rational| {
-        let mut options = options.clone();
-        options.fixed.push((parameter, value.clone()));
-        search(system, &options)
-    };
-    let generic = at(&generic_value)?;
-    let mut values = Vec::new();
-    let mut spurious = Vec::new();
-    for value in roots {
-        let found = at(&value)?;
-        if found.basis.len() > generic.basis.len() {
-            values.push(ExceptionalValue { value, found });
-        } else {
-            spurious.push(value);
-        }
-    }
-    Ok(ExceptionalValues {
+    Ok(Candidates {
         parameter,
         generic_value,
-        generic,
-        values,
-        spurious,
+        roots,
         unexamined: rest,
         largest_minor,
-        no_value_at_zero,
+        zero_left_out,
     })
+}
+
+/// The linear problem of `options` with `parameter` kept as a variable, the others fixed, and
+/// on `options`' level set if it has one: its unknowns those the search there has, its images
+/// the remainders on division by the level set's polynomial, which holds no `parameter`
+/// ([`refuse`]), so that the division, and the problem, at any value of it are these at that
+/// value. The level set is checked as a search checks it, here with `parameter` free: the
+/// flow of `H` must keep it for every value.
+fn problem_with_parameter_kept(
+    system: &System,
+    options: &SearchOptions,
+    parameter: Var,
+) -> Result<Problem, EngineError> {
+    let kept = SearchOptions {
+        symbolic: vec![parameter],
+        space: options.space.parameters_degree(0),
+        new_only: false,
+        on: None,
+        ..options.clone()
+    };
+    let FixedSearch {
+        problem,
+        parameters,
+        ..
+    } = fixed_search_problem(system, &kept)?;
+    let Some(level) = &options.on else {
+        return Ok(problem);
+    };
+    refuse_beside_level_set(system, options)?;
+    level.check(system, &options.fixed)?;
+    let (problem, _, _) = problem.restricted_to(OnLevel::new(level, system, &parameters)?)?;
+    Ok(problem)
 }
 
 /// Refuses what [`exceptional_values`] does not take.
@@ -221,8 +305,18 @@ fn refuse(system: &System, options: &SearchOptions, parameter: Var) -> Result<()
         Some(format!("H does not hold {name}"))
     } else if !options.symbolic.is_empty() {
         Some("parameters kept symbolic: the others are fixed".into())
-    } else if options.on.is_some() {
-        Some("a level set".into())
+    } else if let Some(level) = options
+        .on
+        .as_ref()
+        .filter(|l| l.polynomial().is_ok_and(|p| p.contains(parameter)))
+    {
+        Some(format!(
+            "a level set whose polynomial holds {name}, {}: a level set is taken at the fixed \
+             values of its parameters (whether it is square-free and the flow of H keeps it \
+             is decided there, and each function's normal form is taken modulo it there), \
+             and {name} is searched for, not fixed; write the level set without {name}",
+            level.text
+        ))
     } else if options.fixed.iter().any(|f| f.0 == parameter) {
         Some(format!(
             "a value fixed for {name}, the parameter solved for"
@@ -721,7 +815,7 @@ mod tests {
         // A negative power of a in H: each row made a polynomial, a = 0 no candidate.
         let system = planar("(p_x^2 + p_y^2)/2 + (x^2 + y^2/a)/2", &["a"]);
         let found = exceptional_values(&system, &space(2, 2), system.var("a")).unwrap();
-        assert!(found.no_value_at_zero);
+        assert!(found.zero_left_out);
         assert_eq!(values_of(&found), ["1"]);
         assert!(found.spurious.iter().all(|r| !r.is_zero()));
         let at_one = &found.values[0].found;
@@ -733,7 +827,7 @@ mod tests {
         // With a itself, a = 0 is one (y free there, p_y an integral) and no negative power.
         let direct = planar("(p_x^2 + p_y^2)/2 + (x^2 + a*y^2)/2", &["a"]);
         let found = exceptional_values(&direct, &space(2, 2), direct.var("a")).unwrap();
-        assert!(!found.no_value_at_zero);
+        assert!(!found.zero_left_out);
         assert_eq!(values_of(&found), ["0", "1"]);
     }
 
@@ -753,5 +847,110 @@ mod tests {
         }
         // Roots of the determinants where the search found nothing more.
         assert!(!found.spurious.is_empty());
+    }
+
+    /// The level set `expr = value` of `system`, as `--on` reads it.
+    fn level(system: &System, expr: &str, value: &str) -> crate::search::LevelSet {
+        let e = |t: &str| Expr::parse(system.vars(), t).unwrap();
+        crate::search::LevelSet::new(&format!("{expr} = {value}"), e(expr), e(value))
+    }
+
+    /// The heavy top with `I1 = I2 = 1` and the third moment `I3`, on e(3)*.
+    fn heavy_top() -> System {
+        crate::search::level_set::tests::on_e3(
+            "heavy top",
+            "(M1^2 + M2^2)/2 + M3^2/(2*I3) - c*gamma1",
+            &["I3", "c"],
+        )
+    }
+
+    #[test]
+    fn the_heavy_top_on_the_area_integrals_zero_level_has_the_goryachev_chaplygin_cubic_at_i3_one_quarter(
+    ) {
+        let system = heavy_top();
+        let area = level(&system, "M1*gamma1 + M2*gamma2 + M3*gamma3", "0");
+        let options = SearchOptions::new(SearchSpace::default().poisson_degree(3)).on(area);
+        let found = exceptional_values(&system, &options, system.var("I3")).unwrap();
+        let values = values_of(&found);
+        assert!(values.contains(&"1/4".to_string()), "{values:?}");
+        // Everywhere searched on the level set, every integral proved there.
+        for v in &found.values {
+            assert!(v.found.basis.len() > found.generic.basis.len());
+            assert!(v.found.basis.iter().all(|i| i.on_level.is_some()));
+        }
+        // The cubic's top part, M3(M1² + M2²), is in the space at 1/4 and not at a generic I3.
+        let at_quarter = &found.values[values.iter().position(|v| v == "1/4").unwrap()].found;
+        let cubic = |r: &SearchResult| {
+            r.basis
+                .iter()
+                .any(|i| i.expr().to_string().contains("M1² M3"))
+        };
+        assert!(cubic(at_quarter));
+        assert!(!cubic(&found.generic));
+    }
+
+    #[test]
+    fn a_level_set_on_which_no_value_of_the_parameter_has_more_integrals_gives_none() {
+        // The y oscillator's energy level p_y² + 4y² = 4 is kept for every a; a x only shifts
+        // the x oscillator, and no a gives more there.
+        let system = planar("(p_x^2 + p_y^2)/2 + (x^2 + 4*y^2)/2 + a*x", &["a"]);
+        let energy = level(&system, "p_y^2 + 4*y^2", "4");
+        let found = exceptional_values(&system, &space(2, 2).on(energy), system.var("a")).unwrap();
+        assert!(found.values.is_empty(), "{:?}", values_of(&found));
+        assert!(found.generic.on.is_some());
+    }
+
+    #[test]
+    fn a_level_set_whose_polynomial_holds_the_parameter_is_refused() {
+        let system = planar("(p_x^2 + p_y^2)/2 + (x^2 + a*y^2)/2", &["a"]);
+        let holding_a = level(&system, "p_y^2 + a*y^2", "a");
+        let refused = exceptional_values(&system, &space(2, 2).on(holding_a), system.var("a"))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            refused.contains("a level set whose polynomial holds a"),
+            "{refused}"
+        );
+    }
+
+    /// [`Candidates::confirm`] searches once at the generic value and once at each root, with
+    /// the caller's search, and keeps the roots where it finds more: as
+    /// [`exceptional_values`] does with its own.
+    #[test]
+    fn confirming_the_candidates_searches_once_at_each_with_the_callers_search() {
+        let system = planar("(p_x^2 + p_y^2)/2 + (x^2 + a*y^2)/2", &["a"]);
+        let a = system.var("a");
+        let options = space(3, 3);
+        let candidates = exceptional_candidates(&system, &options, a).unwrap();
+        let roots = candidates.roots.clone();
+        let mut searched = Vec::new();
+        let found = candidates
+            .confirm(|value| {
+                searched.push(value.clone());
+                search(&system, &options.clone().fix(a, value.clone()))
+            })
+            .unwrap();
+        assert_eq!(searched.len(), roots.len() + 1);
+        assert_eq!(searched[1..], roots[..]);
+        let direct = exceptional_values(&system, &options, a).unwrap();
+        assert_eq!(values_of(&found), values_of(&direct));
+        assert_eq!(found.spurious, direct.spurious);
+    }
+
+    /// `0` is said to be left out only where it was a root: `x²/2 + y²/(2a)` has it (each row
+    /// times `a`, those of `x²` then vanishing at `a = 0`); `H/a` has not.
+    #[test]
+    fn zero_is_left_out_only_where_it_was_a_root() {
+        let at = |h: &str| {
+            let system = planar(h, &["a"]);
+            exceptional_candidates(&system, &space(2, 2), system.var("a")).unwrap()
+        };
+        let one_over_a = at("(p_x^2 + p_y^2)/2 + (x^2 + y^2/a)/2");
+        assert!(one_over_a.zero_left_out);
+        assert!(one_over_a.roots.iter().all(|r| !r.is_zero()));
+        // H/a has H's integrals at every a ≠ 0: each row times a is constant, no root at all.
+        let scaled = at("(p_x^2 + p_y^2 + x^2 + y^2)/(2*a)");
+        assert!(!scaled.zero_left_out);
+        assert!(scaled.roots.is_empty(), "{:?}", scaled.roots);
     }
 }

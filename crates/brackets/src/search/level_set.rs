@@ -822,16 +822,23 @@ pub(super) mod tests {
 
     /// The Goryachev–Chaplygin top on e(3)*: `H = (M1² + M2² + 4M3²)/2 − c γ1`.
     fn gc_top() -> System {
-        let vars = Vars::builder()
+        on_e3("GC top", "(M1^2 + M2^2 + 4*M3^2)/2 - c*gamma1", &["c"])
+    }
+
+    /// A system on e(3)*, `M1, M2, M3, gamma1, gamma2, gamma3` with the Lie–Poisson bracket,
+    /// with `parameters` and the Hamiltonian `h`.
+    pub(in crate::search) fn on_e3(name: &str, h: &str, parameters: &[&str]) -> System {
+        let mut builder = Vars::builder()
             .poisson("M1")
             .poisson("M2")
             .poisson("M3")
             .poisson("gamma1")
             .poisson("gamma2")
-            .poisson("gamma3")
-            .parameter("c")
-            .build()
-            .unwrap();
+            .poisson("gamma3");
+        for p in parameters {
+            builder = builder.parameter(p);
+        }
+        let vars = builder.build().unwrap();
         let e = |t: &str| Expr::parse(&vars, t).unwrap();
         let space = PhaseSpace::new(&vars, &[])
             .unwrap()
@@ -847,7 +854,7 @@ pub(super) mod tests {
                 ("M3", "gamma2", e("-gamma1")),
             ])
             .unwrap();
-        System::new("GC top", space, e("(M1^2 + M2^2 + 4*M3^2)/2 - c*gamma1")).unwrap()
+        System::new(name, space, e(h)).unwrap()
     }
 
     /// A system on the plane's canonical coordinates `x`, `y`, `p_x`, `p_y`, with `parameters`

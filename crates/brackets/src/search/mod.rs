@@ -106,7 +106,9 @@ mod result;
 #[cfg(test)]
 mod tests;
 
-pub use exceptional::{exceptional_values, ExceptionalValue, ExceptionalValues};
+pub use exceptional::{
+    exceptional_candidates, exceptional_values, Candidates, ExceptionalValue, ExceptionalValues,
+};
 pub use level_set::{BesideLevelSet, LevelProof, LevelReduction, LevelSet};
 pub use options::{SearchOptions, SearchSpace, DEFAULT_MAX_MINOR, DEFAULT_MAX_PRODUCTS};
 pub(crate) use parameters::{check_parameters, off_vanishing_denominators};
