@@ -286,12 +286,15 @@ fn refuse_beside_level_set(system: &System, options: &SearchOptions) -> anyhow::
 }
 
 /// The level set `text` of `--on`, `EXPR = VALUE`, read and checked
-/// ([`brackets::search::LevelSet::check`], at the values `fixed`): each refusal placed in
-/// `text` as a condition's is, `<command line>:1:C:` with a caret, at the part it is about.
+/// ([`brackets::search::LevelSet::check`], at the values `fixed`; with the parameter
+/// `searched_for` by `--find-values` free, `LevelSet::check_for_values_of`): each refusal
+/// placed in `text` as a condition's is, `<command line>:1:C:` with a caret, at the part it is
+/// about.
 fn level_set(
     subject: &Subject,
     text: &str,
     fixed: &[(trigpoly::Var, trigpoly::Rational)],
+    searched_for: Option<trigpoly::Var>,
 ) -> anyhow::Result<brackets::search::LevelSet> {
     let refuse = |span: std::ops::Range<usize>, message: String| -> anyhow::Error {
         let error = FileError::at(ErrorKind::Condition, COMMAND_LINE, text, span, message);
@@ -353,7 +356,11 @@ fn level_set(
         ));
     }
     let level = brackets::search::LevelSet::new(text, expr, value);
-    match level.check(subject.system(), fixed) {
+    let checked = match searched_for {
+        Some(parameter) => level.check_for_values_of(subject.system(), fixed, parameter),
+        None => level.check(subject.system(), fixed),
+    };
+    match checked {
         Ok(()) => Ok(level),
         Err(e) => Err(refuse(lhs, e.to_string())),
     }
@@ -768,7 +775,11 @@ fn search(a: &SearchArgs, subject: &Subject, output: &Output) -> anyhow::Result<
     }
     if let Some(on) = &a.on {
         refuse_beside_level_set(subject.system(), &options)?;
-        options.on = Some(level_set(subject, on, &options.fixed)?);
+        // With --find-values, its parameter is free where the flow must keep the level set.
+        let searched_for = (a.find_values.as_deref())
+            .and_then(|name| subject.system().vars().lookup(name.trim()))
+            .filter(|&v| subject.system().vars().variable(v).kind() == VarKind::Parameter);
+        options.on = Some(level_set(subject, on, &options.fixed, searched_for)?);
     }
     if let Some(names) = &a.find_values {
         options.max_minor = usize::try_from(a.max_minor).unwrap_or(usize::MAX);

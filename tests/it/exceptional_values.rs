@@ -436,6 +436,31 @@ fn a_level_set_where_no_value_has_more_integrals_finds_none() {
     assert!(text.contains("on the level set"), "{text}");
 }
 
+/// A level set that the flow keeps at one value of the parameter alone is refused where it
+/// stands, saying that the parameter is free there: `{x p_y − y p_x, H} = (1 − a) x y`.
+#[test]
+fn a_level_set_kept_at_one_value_of_the_parameter_alone_is_refused_saying_so() {
+    let file = oscillator("kept-at-one.toml", "(x^2 + a*y^2)/2");
+    let refused = superint_refused(&[
+        "search",
+        file.to_str().unwrap(),
+        "--find-values",
+        "a",
+        "--on",
+        "x*p_y - y*p_x = 0",
+        "--positions-degree",
+        "2",
+    ]);
+    assert!(
+        refused.contains("<command line>:1:1: --on: the flow of H leaves the level set"),
+        "{refused}"
+    );
+    assert!(
+        refused.contains("a, searched for, is free here, so the flow must keep the level set"),
+        "{refused}"
+    );
+}
+
 /// Each value's search, shown as `--when 'C = VALUE'` shows it, is the engine's own, searched
 /// once: its sections read as that ordinary search's.
 #[test]

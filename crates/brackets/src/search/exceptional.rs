@@ -287,7 +287,7 @@ fn problem_with_parameter_kept(
         return Ok(problem);
     };
     refuse_beside_level_set(system, options)?;
-    level.check(system, &options.fixed)?;
+    level.check_for_values_of(system, &options.fixed, parameter)?;
     let (problem, _, _) = problem.restricted_to(OnLevel::new(level, system, &parameters)?)?;
     Ok(problem)
 }
@@ -909,6 +909,24 @@ mod tests {
             .to_string();
         assert!(
             refused.contains("a level set whose polynomial holds a"),
+            "{refused}"
+        );
+    }
+
+    #[test]
+    fn a_level_set_kept_at_some_values_of_the_parameter_alone_is_refused_saying_so() {
+        // {x p_y − y p_x, H} = (1 − a) x y: the flow keeps the level set at a = 1 alone.
+        let system = planar("(p_x^2 + p_y^2)/2 + (x^2 + a*y^2)/2", &["a"]);
+        let angular = level(&system, "x*p_y - y*p_x", "0");
+        let refused = exceptional_values(&system, &space(2, 2).on(angular), system.var("a"))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            refused.starts_with("the flow of H leaves the level set"),
+            "{refused}"
+        );
+        assert!(
+            refused.contains("the flow must keep the level set at every value of a"),
             "{refused}"
         );
     }

@@ -93,6 +93,29 @@ impl LevelSet {
         self.check_square_free_and_kept(system, fixed, None, false)
     }
 
+    /// [`LevelSet::check`] for a search for the exceptional values of `parameter`
+    /// ([`exceptional_values`](super::exceptional_values)), which is free there: `{P, H}` is
+    /// divided by `P` with it, and a level set that the flow keeps at some of its values alone
+    /// is refused saying so.
+    pub fn check_for_values_of(
+        &self,
+        system: &System,
+        fixed: &[(Var, Rational)],
+        parameter: Var,
+    ) -> Result<(), EngineError> {
+        self.check(system, fixed).map_err(|e| match e {
+            EngineError::Invalid(m) if m.starts_with(FLOW_LEAVES) => {
+                let name = system.vars().variable(parameter).unicode();
+                EngineError::Invalid(format!(
+                    "{m}; {name}, searched for, is free here, so the flow must keep the level \
+                     set at every value of {name}: one kept at some values alone (where that \
+                     remainder vanishes) is not searched for exceptional values"
+                ))
+            }
+            e => e,
+        })
+    }
+
     /// [`LevelSet::check`] for a claim, which holds for every value of the parameters, with no
     /// value fixed: the same refusals, but `P` is shown square-free as a polynomial with its
     /// parameters, so for all of their values but those of a proper algebraic subset (`a = 0`
@@ -178,8 +201,8 @@ impl LevelSet {
         let division = p_divide(&flow, &p, &order)?;
         if !division.remainder.is_zero() {
             return invalid(format!(
-                "the flow of H leaves the level set{at}: {{P, H}} = {flow} for P = {p}, which \
-                 is not P times a polynomial (its remainder on division by P is {})",
+                "{FLOW_LEAVES}{at}: {{P, H}} = {flow} for P = {p}, which is not P times a \
+                 polynomial (its remainder on division by P is {})",
                 division.remainder
             ));
         }
@@ -508,6 +531,9 @@ fn with_parameters(p: &Expr, order: &DivisionOrder) -> DivisionOrder {
         .collect();
     DivisionOrder::graded_lex(&variables)
 }
+
+/// How the refusal of a level set that the flow of `H` leaves begins (`{P, H}` not in `(P)`).
+const FLOW_LEAVES: &str = "the flow of H leaves the level set";
 
 /// How many lines through phase space [`has_no_repeated_factor`] tries.
 const LINES_TRIED: usize = 12;
