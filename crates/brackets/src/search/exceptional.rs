@@ -17,6 +17,19 @@
 //! irrational and complex roots are not examined, and the factor holding them is reported
 //! ([`ExceptionalValues::unexamined`]).
 //!
+//! The work is split in two: [`exceptional_candidates`] finds the roots and a generic value
+//! ([`Candidates`]), and [`Candidates::confirm`] searches at each with a search it is given
+//! ([`exceptional_values`] gives the ordinary one; `superint search --find-values` its own,
+//! whose reports it shows), so that each value is searched once.
+//!
+//! On a level set `P = 0` (`SearchOptions::on`), `M(t)` is that of the search there: the
+//! monomials divisible by `P`'s leading monomial left out and each image its remainder on
+//! division by `P`. `P` must be free of `t` and its leading coefficient, in the graded
+//! lexicographic order of the phase variables, a number (at the other parameters' fixed
+//! values): the division then never divides by anything holding `t`, and commutes with putting
+//! in a value of it, so that `M(t0)` is the matrix of the search at `t0`. The flow of `H` must
+//! keep the level set at every `t` ([`LevelSet::check_for_values_of`](super::LevelSet::check_for_values_of)).
+//!
 //! The generic rank is the rank at a random point modulo a prime (a larger one would need that
 //! point to be a root modulo the prime of every nonzero minor of that size, a chance below
 //! `deg/p < 2⁻⁵⁰`); everything else is exact.
@@ -132,6 +145,34 @@ impl Candidates {
     /// one. The search must be exact at the value it is given, as [`exceptional_values`]'
     /// (the options with the parameter fixed there) is; a caller that shows each search may
     /// run its own and keep what it shows, each value searched once.
+    ///
+    /// ```
+    /// use brackets::search::{exceptional_candidates, search, SearchOptions, SearchSpace};
+    /// use brackets::{PhaseSpace, System};
+    /// use trigpoly::{Expr, Vars};
+    ///
+    /// // p²/2 + (x² + a y²)/2, isotropic at a = 1.
+    /// let vars = Vars::builder()
+    ///     .coordinate("x").coordinate("y").momentum("p_x").momentum("p_y").parameter("a")
+    ///     .build()?;
+    /// let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")])?;
+    /// let h = Expr::parse(&vars, "(p_x^2 + p_y^2)/2 + (x^2 + a*y^2)/2")?;
+    /// let oscillator = System::new("oscillator", space, h)?;
+    /// let options = SearchOptions::new(SearchSpace::default().momenta_degree(2).positions_degree(2));
+    /// let a = vars.lookup("a").unwrap();
+    /// let candidates = exceptional_candidates(&oscillator, &options, a)?;
+    /// let mut searched = Vec::new();
+    /// let found = candidates.confirm(|value| {
+    ///     searched.push(value.to_string());
+    ///     search(&oscillator, &options.clone().fix(a, value.clone()))
+    /// })?;
+    /// // The generic value first, then each root once.
+    /// assert_eq!(searched[0], found.generic_value.to_string());
+    /// assert_eq!(searched.len(), 1 + found.values.len() + found.spurious.len());
+    /// let values: Vec<String> = found.values.iter().map(|v| v.value.to_string()).collect();
+    /// assert_eq!(values, ["0", "1"]);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn confirm<E>(
         self,
         mut search_at: impl FnMut(&Rational) -> Result<SearchResult, E>,
