@@ -1,7 +1,7 @@
 //! The report of `superint search --find-values`: the values of one parameter at which the
 //! space holds more integrals than at a generic value
 //! ([`brackets::search::exceptional_values`]), then the search at the generic value and at
-//! each of those values, as `--when` shows it.
+//! each of those values, as `--when` shows it (on a level set, as `--fix` does).
 
 use brackets::search::ExceptionalValues;
 use brackets::System;
@@ -10,6 +10,8 @@ use trigpoly::Style;
 use crate::report::{counted, listed};
 use crate::report::{Entry, ExceptionalFacts, Facts, Report, Section, SummaryKind, ValueFacts};
 use crate::system_file::Caller;
+
+use super::search::level_set_shown;
 
 /// The report of what [`brackets::search::exceptional_values`] `found` for `name`, `system`:
 /// a section that says which values have more integrals (and, with `facts`, the JSON's data),
@@ -38,6 +40,17 @@ pub fn exceptional_values_report(
         counted(found.largest_minor.0, "row"),
         found.largest_minor.1
     ))];
+    // On a level set, the values are its own: say so before them, as the title does.
+    let on = (found.generic.on.as_ref())
+        .map(|on| format!(" on the level set `{}`", level_set_shown(on)))
+        .unwrap_or_default();
+    if !on.is_empty() {
+        entries.push(Entry::Text(format!(
+            "These are the values{on}: the equations are those of the search there (section 2), \
+             each bracket taken modulo its polynomial, which does not hold `{t}`; off the level \
+             set they may have no more integrals."
+        )));
+    }
     // The sections of the searches begin after this one, each search's after the last's.
     let starts: Vec<u32> = searches
         .iter()
@@ -159,7 +172,7 @@ pub fn exceptional_values_report(
         }
     }
     Report {
-        title: format!("Values of `{t}` with more integrals for {name}"),
+        title: format!("Values of `{t}` with more integrals for {name}{on}"),
         subtitle: String::new(),
         sections,
         summary: SummaryKind::Searches,

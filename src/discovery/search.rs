@@ -1525,7 +1525,7 @@ fn shown_multiplier(r: &SearchResult, i: usize) -> Result<Option<Expr>, trigpoly
 }
 
 /// A level set as the report shows it: `M1γ1 + M2γ2 + M3γ3 = 0`.
-fn level_set_shown(on: &SearchedLevel) -> String {
+pub(super) fn level_set_shown(on: &SearchedLevel) -> String {
     format!("{} = {}", on.level.expr, on.level.value)
 }
 

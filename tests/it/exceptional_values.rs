@@ -407,6 +407,18 @@ fn the_heavy_top_on_the_area_level_has_the_goryachev_chaplygin_cubic_at_i1_equal
     }
     // The cubic, its bracket with H a multiple of M·γ, in the search at 1/4.
     let text = normalize(&superint_ok(&find));
+    // The values are the level set's, as the title and the first section say.
+    assert!(
+        text.starts_with(
+            "Values of I3 with more integrals for the heavy top on the level set M1 γ1 + M2 γ2 \
+             + M3 γ3 = 0"
+        ),
+        "{text}"
+    );
+    assert!(
+        text.contains("These are the values on the level set M1 γ1 + M2 γ2 + M3 γ3 = 0"),
+        "{text}"
+    );
     assert!(text.contains("At I3 = 1/4: Basis"), "{text}");
     assert!(
         text.contains("= Q4 (M1 γ1 + M2 γ2 + M3 γ3) at I3 = 1/4, c = 1"),
