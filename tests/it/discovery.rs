@@ -203,6 +203,36 @@ const COMMANDS: &[(&str, &str)] = &[
         "superint search systems/heavy-top.toml --find-values I3 --poisson-degree 4",
     ),
     (
+        "qp-values-quadratic",
+        "superint search systems/quartic-potentials.toml --find-values a --fix b=1 \
+         --momenta-degree 2 --positions-degree 4 --trig-degree 0",
+    ),
+    (
+        "qp-values-parabolic",
+        "superint search systems/quartic-potentials.toml --find-values a --fix b=16 \
+         --momenta-degree 2 --positions-degree 5 --trig-degree 0",
+    ),
+    (
+        "qp-values-quartic-b1",
+        "superint search systems/quartic-potentials.toml --find-values a --fix b=1 \
+         --momenta-degree 4 --positions-degree 8 --trig-degree 0",
+    ),
+    (
+        "qp-values-quartic",
+        "superint search systems/quartic-potentials.toml --find-values a --fix b=8 \
+         --momenta-degree 4 --positions-degree 8 --trig-degree 0",
+    ),
+    (
+        "qp-values-b",
+        "superint search systems/quartic-potentials.toml --find-values b --fix a=6 \
+         --momenta-degree 4 --positions-degree 8 --trig-degree 0",
+    ),
+    (
+        "qp-minus-six",
+        "superint search systems/quartic-potentials.toml --when 'a = -6, b = 1' \
+         --momenta-degree 4 --positions-degree 8 --trig-degree 0 --new-only",
+    ),
+    (
         "kepler",
         "superint search systems/kepler.toml --momenta-degree 2 --positions-degree 2 \
          --trig-degree 1 --laurent",
@@ -1419,6 +1449,137 @@ fn henon_heiles_values_of_c_with_a_quartic_integral_at_b_sixteen_found_from_h_al
             "11 claims: 11 proved, 0 refuted",
         ],
     );
+}
+
+/// The homogeneous quartic potentials `x⁴ + a x²y² + y⁴` (results.md §29), quadratic in the
+/// momenta, from `H` alone: the separable `a = 0`, the rotation `a = 2` and the separable in
+/// `x ± y`, `a = 6`, and no other value, every root of the determinants rational; on the file,
+/// each value's integral is the file's `H_x`, `L`, `S`.
+#[test]
+fn quartic_potentials_cases_found_from_h() {
+    expect_alone(
+        "qp-values-quadratic",
+        &[
+            "For a generic a (searched at a = 7, no root): 2 integrals (section 2).",
+            "More integrals at a = 0, 3 integrals (section 4), at a = 2, 4 integrals (section 6) \
+             and at a = 6, 3 integrals (section 8).",
+            "Every root of the determinants is rational: no other value of a has more integrals \
+             in this space.",
+            "I3 = p_x² + 2x⁴",
+            "I2 = x p_y − y p_x",
+            "I2 = p_x p_y + 4x³y + 4xy³",
+            "12 claims: 12 proved, 0 refuted",
+        ],
+    );
+    expect(
+        "qp-values-quadratic",
+        &[
+            "I3 = p_x² + 2x⁴ = 2 H_x",
+            "I2 = x p_y − y p_x = L",
+            "I2 = p_x p_y + 4x³y + 4xy³ = S",
+        ],
+    );
+}
+
+/// At `b = 16` the parabolic case `a = 12` is quadratic in the momenta and of degree 5 in the
+/// positions (the literature's list calls it quartic): found from `H` alone, the file's `P`.
+#[test]
+fn quartic_potentials_parabolic_case_a_twelve_b_sixteen_is_quadratic_found_from_h() {
+    expect_alone(
+        "qp-values-parabolic",
+        &[
+            "More integrals at a = 0, 3 integrals (section 4) and at a = 12, 3 integrals \
+             (section 6).",
+            "Every root of the determinants is rational",
+            "I3 = x p_x p_y − y p_x² + 4x⁴y + 8x²y³",
+            "8 claims: 8 proved, 0 refuted",
+        ],
+    );
+    expect(
+        "qp-values-parabolic",
+        &["I3 = x p_x p_y − y p_x² + 4x⁴y + 8x²y³ = P"],
+    );
+}
+
+/// Quartic in the momenta, at `b = 8`: `a = 6` (the file's `Q`) and the separable `a = 0`;
+/// at `a = 6`, the values `b = 1` and `b = 8`; the irrational roots are told, not examined.
+#[test]
+fn quartic_potentials_quartic_case_a_six_b_eight_found_from_h() {
+    expect_alone(
+        "qp-values-quartic",
+        &[
+            "For a generic a (searched at a = 7, no root): 3 integrals (section 2).",
+            "More integrals at a = 0, 6 integrals (section 4) and at a = 6, 4 integrals \
+             (section 6).",
+            "(degree 58; --full-expressions shows it whole), which are not rational (50 of them \
+             real): not examined.",
+            "I3 = 2 p_x² p_y² + p_y⁴ + 16x³y p_x p_y + 24x²y² p_y² + 32y⁴ p_x² + 32y⁴ p_y² \
+             + 32x⁶y²",
+            "13 claims: 13 proved, 0 refuted",
+        ],
+    );
+    expect("qp-values-quartic", &["= Q"]);
+    expect_alone(
+        "qp-values-b",
+        &[
+            "For a generic b (searched at b = 7, no root): 3 integrals (section 2).",
+            "More integrals at b = 1, 6 integrals (section 4) and at b = 8, 4 integrals \
+             (section 6).",
+            "13 claims: 13 proved, 0 refuted",
+        ],
+    );
+}
+
+/// `a = −6` at `b = 1` (`Re (x + iy)⁴`) has no integral but `H` and its square to degree 4 in
+/// the momenta: it is not even a root of the determinants at `b = 1`, where `a = 0, 2, 6` are.
+#[test]
+fn quartic_potentials_a_minus_six_has_no_second_integral() {
+    let text = expect_alone(
+        "qp-values-quartic-b1",
+        &[
+            "More integrals at a = 0, 6 integrals (section 4), at a = 2, 9 integrals (section 6) \
+             and at a = 6, 6 integrals (section 8).",
+            "(degree 52; --full-expressions shows it whole), which are not rational (46 of them \
+             real): not examined.",
+        ],
+    );
+    assert!(
+        text.contains("a = −2,") && !text.contains("a = −6"),
+        "{text}"
+    );
+    expect(
+        "qp-minus-six",
+        &[
+            "Dimension of the space of integrals: 3.",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
+}
+
+/// The file's integrals hold at their cases and at no neighbour: each claim proved, each
+/// false neighbour refuted with its residual.
+#[test]
+fn quartic_potentials_integrals_hold_at_their_cases_alone() {
+    let out = normalize(&superint_ok(&[
+        "check",
+        "systems/quartic-potentials.toml",
+        "--no-timings",
+    ]));
+    for proved in [
+        "{L, H} = 0 at a = 2, b = 1 [rotation proved]",
+        "{H_x, H} = 0 at a = 0 [separable-cartesian proved]",
+        "{S, H} = 0 at a = 6, b = 1 [separable-diagonal proved]",
+        "{P, H} = 0 at a = 12, b = 16 [parabolic proved]",
+        "{Q, H} = 0 at a = 6, b = 8 [quartic proved]",
+        "{L, H} = 0 at a = 2, b = 2 [false-rotation refuted, as expected] \
+         residual lhs − rhs = −4xy³",
+        "{P, H} = 0 at a = 12, b = 15 [false-parabolic refuted, as expected] \
+         residual lhs − rhs = 4xy³ p_x",
+        "[false-quartic refuted, as expected]",
+        "12 claims in 1 file: 6 proved, 6 refuted; all as expected",
+    ] {
+        assert!(out.contains(&normalize(proved)), "{proved}: {out}");
+    }
 }
 
 /// The values of `I3` of the heavy top with more integrals of degree 4, from `H`, where `I3`
