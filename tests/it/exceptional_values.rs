@@ -530,3 +530,21 @@ fn top_values(file: &str, parameter: &str) -> (Vec<(String, u64)>, serde_json::V
         .collect();
     (values, found)
 }
+
+/// An ordinary search is at the fixed values, so the flow is checked there: the level set
+/// `x p_y − y p_x = 0` of `x² + a y²`, kept at `a = 1` alone, is searched with `--fix a=1`
+/// (finding `p_x p_y + x y`) and refused at `a = 2`, saying at the fixed values.
+#[test]
+fn a_level_set_kept_at_the_fixed_value_alone_is_searched_there() {
+    let file = oscillator("kept-at-the-fixed-value.toml", "(x^2 + a*y^2)/2");
+    let path = file.to_str().unwrap();
+    let args = |a| ["search", path, "--fix", a, "--on", "x*p_y - y*p_x = 0"];
+    let found = superint_ok(&args("a=1"));
+    assert!(found.contains("I3 = p_x p_y + xy"), "{found}");
+    assert!(found.contains("4 proved, 0 refuted"), "{found}");
+    let refused = superint_refused(&args("a=2"));
+    assert!(
+        refused.contains("the flow of H leaves the level set at the fixed values: {P, H} = −xy"),
+        "{refused}"
+    );
+}

@@ -86,24 +86,29 @@ impl LevelSet {
     /// variable; `P` not real (the normal forms of a real function modulo a complex `P` are
     /// complex, and its real level set needs two equations); a leading coefficient that is no number at the values `fixed` (parameters
     /// named there are numbers); and a level set that the flow of `H` leaves, `{P, H}` not in
-    /// `(P)`, decided by the remainder of its division by `P`, at every value of the
-    /// parameters where the leading coefficient is a number for them, else at `fixed`.
+    /// `(P)`, decided by the remainder of its division by `P`, with `H` and `P` at the values
+    /// `fixed`, where the search is (the other parameters free): `x² + a y²` keeps
+    /// `x p_y − y p_x = 0` at `a = 1` alone, which `--fix a=1` searches.
     pub fn check(&self, system: &System, fixed: &[(Var, Rational)]) -> Result<(), EngineError> {
         self.check_form(system, "--on")?;
-        self.check_square_free_and_kept(system, fixed, None, false)
+        self.check_square_free_and_kept(system, fixed, None, CheckedFor::Search)
     }
 
     /// [`LevelSet::check`] for a search for the exceptional values of `parameter`
     /// ([`exceptional_values`](super::exceptional_values)), which is free there: `{P, H}` is
-    /// divided by `P` with it, and a level set that the flow keeps at some of its values alone
-    /// is refused saying so.
+    /// divided by `P` with every parameter free (at `fixed` only where the leading coefficient
+    /// needs them), and a level set that the flow keeps at some values of `parameter` alone is
+    /// refused saying so.
     pub fn check_for_values_of(
         &self,
         system: &System,
         fixed: &[(Var, Rational)],
         parameter: Var,
     ) -> Result<(), EngineError> {
-        self.check(system, fixed).map_err(|e| match e {
+        self.check_form(system, "--on")?;
+        let checked =
+            self.check_square_free_and_kept(system, fixed, None, CheckedFor::ExceptionalValues);
+        checked.map_err(|e| match e {
             EngineError::Invalid(m) if m.starts_with(FLOW_LEAVES) => {
                 let name = system.vars().variable(parameter).unicode();
                 EngineError::Invalid(format!(
@@ -132,20 +137,21 @@ impl LevelSet {
         condition: Option<&Condition>,
     ) -> Result<(), EngineError> {
         self.check_form(system, "`on`")?;
-        self.check_square_free_and_kept(system, &[], condition, true)
+        self.check_square_free_and_kept(system, &[], condition, CheckedFor::Claim)
     }
 
     /// The rest of [`LevelSet::check`], after its form: the leading coefficient, `P` square-free
-    /// (at the searched values of the parameters, or with them as variables
-    /// `for_every_value`), and the flow of `H` keeping the level set, at the values of the
+    /// (at the searched values of the parameters, or with them as variables for a claim), and
+    /// the flow of `H` keeping the level set, where `checked_for` says, at the values of the
     /// parameters that `condition` fixes, if any.
     fn check_square_free_and_kept(
         &self,
         system: &System,
         fixed: &[(Var, Rational)],
         condition: Option<&Condition>,
-        for_every_value: bool,
+        checked_for: CheckedFor,
     ) -> Result<(), EngineError> {
+        let for_every_value = checked_for == CheckedFor::Claim;
         let invalid = |m: String| Err(EngineError::Invalid(m));
         let p = self.polynomial()?;
         let order = Self::order(system);
@@ -180,6 +186,13 @@ impl LevelSet {
                 shown.brief_excerpt()
             ));
         }
+        // At the fixed values where the search is, or where the leading coefficient needs them.
+        let searched_at_fixed =
+            checked_for == CheckedFor::Search && fixed_anything(&p, system.hamiltonian(), fixed);
+        let (p, at) = match searched_at_fixed && at.is_empty() {
+            true => (fix_parameters(&p, fixed)?, " at the fixed values"),
+            false => (p, at),
+        };
         let h = fix_parameters(
             system.hamiltonian(),
             if at.is_empty() { &[] } else { fixed },
@@ -530,6 +543,24 @@ fn with_parameters(p: &Expr, order: &DivisionOrder) -> DivisionOrder {
         .chain(parameters)
         .collect();
     DivisionOrder::graded_lex(&variables)
+}
+
+/// What [`LevelSet::check_square_free_and_kept`] checks a level set for, which says where the
+/// flow of `H` must keep it and where `P` must be square-free.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum CheckedFor {
+    /// An ordinary search, at the fixed values: `H` and `P` there.
+    Search,
+    /// A search for a parameter's exceptional values: every parameter free (at the fixed
+    /// values only where `P`'s leading coefficient needs them).
+    ExceptionalValues,
+    /// A claim, for every value of the parameters: `P` square-free with them too.
+    Claim,
+}
+
+/// Whether `p` or `h` holds a parameter that `fixed` gives a value.
+fn fixed_anything(p: &Expr, h: &Expr, fixed: &[(Var, Rational)]) -> bool {
+    fixed.iter().any(|(v, _)| p.contains(*v) || h.contains(*v))
 }
 
 /// How the refusal of a level set that the flow of `H` leaves begins (`{P, H}` not in `(P)`).
@@ -1219,6 +1250,36 @@ pub(super) mod tests {
             &p(&format!("{area}^2*({gamma} - 1)")),
             &order
         ));
+    }
+
+    /// An ordinary search is at the fixed values, so the flow is checked there: `x² + a y²`
+    /// keeps `x p_y − y p_x = 0` at `a = 1` alone (`{P, H} = (1 − a) x y`), searched with
+    /// `a` fixed to 1 and refused at 2 or with `a` free; a search for `a`'s exceptional values
+    /// keeps it free, and `x p_y − y p_x`, conserved at `a = 1`, is found there.
+    #[test]
+    fn a_level_set_kept_at_the_fixed_values_alone_is_searched_there() {
+        let oscillator = on_the_plane("oscillator", "(p_x^2 + p_y^2)/2 + (x^2 + a*y^2)/2", &["a"]);
+        let a = oscillator.vars().lookup("a").unwrap();
+        let at = |x: i64| [(a, Rational::from(x))];
+        let angular = level(&oscillator, "x*p_y - y*p_x", "0");
+        assert!(angular.check(&oscillator, &at(1)).is_ok());
+        let leaves = |r: Result<(), EngineError>| match r {
+            Err(EngineError::Invalid(m)) => m.starts_with(super::FLOW_LEAVES),
+            _ => false,
+        };
+        assert!(leaves(angular.check(&oscillator, &at(2))));
+        assert!(leaves(angular.check(&oscillator, &[])));
+        assert!(leaves(angular.check_for_values_of(&oscillator, &[], a)));
+        let space = SearchSpace::default().momenta_degree(2).positions_degree(2);
+        let options = SearchOptions::new(space).fix(a, 1).on(angular.clone());
+        let r = search(&oscillator, &options).unwrap();
+        assert_proved_on(&oscillator, &r, &angular.polynomial().unwrap());
+        assert!(r.basis.iter().all(|f| f.proved_fixed));
+        let crossed = Expr::parse(oscillator.vars(), "p_x*p_y + x*y").unwrap();
+        assert!(r
+            .basis
+            .iter()
+            .any(|f| f.fixed == crossed || f.fixed == -&crossed));
     }
 
     #[test]
