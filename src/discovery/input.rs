@@ -496,8 +496,9 @@ const FIX_USAGE: &str = "give a value as NAME=VALUE, such as omega=1";
 /// Reads parameter values `omega=1,M=2/3`; a blank text fixes none. A comma with no value
 /// after it or before it is refused at the comma, as [`parse_condition`] refuses one; a value
 /// with no `=`, or nothing on one side of it, at the value or its `=`; a name that is no
-/// parameter, or one given two values, at the name; a value that is no number, or is zero,
-/// at the value.
+/// parameter, or one given two values, at the name; a value that is no number, or a zero
+/// where the system has no value or its radicals may not be independent
+/// (`zero_has_no_value`), at the value.
 pub fn parse_fixed(system: &System, text: &str) -> Result<Vec<(Var, Rational)>, ListRefusal> {
     let mut out = Vec::new();
     let pieces = comma_pieces(text);
@@ -566,22 +567,36 @@ pub fn parse_fixed(system: &System, text: &str) -> Result<Vec<(Var, Rational)>, 
             },
         };
         if q.is_zero() {
-            // --when cannot set a parameter that a radicand or a denominator holds either.
-            let instead = match brackets::Condition::cannot_set(system.space(), v) {
-                Some(why) => format!("--when '{name} = 0' cannot set it either: {why}"),
-                None => {
-                    format!("to study the system at {name} = 0, set it with --when '{name} = 0'")
-                }
-            };
-            return Err(refuse(
-                value_span,
-                format!(
-                    "{name} = 0: parameters are fixed to nonzero values (a value the lift back \
-                     can divide by); {instead}"
-                ),
-            ));
+            if let Some(why) = zero_has_no_value(system, v) {
+                return Err(refuse(value_span, format!("{name} = 0: {why}")));
+            }
         }
         out.push((v, q));
     }
     Ok(out)
+}
+
+/// Why `v` may not be fixed to zero, if it may not: `H` divides by it (`M3²/(2 I3)`: `H` has
+/// no value there), or a radicand holds it (at zero it may be a square, or another's: the two
+/// centres' radicands coincide at `a = 0`, and their radicals are taken as independent).
+/// Elsewhere zero is a value as any other (`--fix c=0`, where nothing is lifted back to `c`).
+fn zero_has_no_value(system: &System, v: Var) -> Option<String> {
+    let vars = system.vars();
+    let name = vars.variable(v).unicode();
+    if system.hamiltonian().low_degree(v).unwrap_or(0) < 0 {
+        return Some(format!(
+            "H divides by {name}, so it has no value at {name} = 0: give {name} another value"
+        ));
+    }
+    let (radical, radicand) = system
+        .space()
+        .radicals()
+        .iter()
+        .find(|(_, r)| r.contains(v))?;
+    Some(format!(
+        "the radicand of {} = √({radicand}) holds {name}, and at {name} = 0 it may be a square \
+         or another radicand, while the radicals are taken as independent: give {name} another \
+         value",
+        vars.variable(*radical).unicode()
+    ))
 }

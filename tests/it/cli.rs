@@ -2148,7 +2148,7 @@ fn refused_at(text: &str, column: usize, caret: &str, message: &str) -> String {
 /// Every refusal of --fix and --symbolic that is about a place in its text says it as --when
 /// does, `<command line>:1:C:` with the option named, the text and a caret under the place
 /// (the comma with nothing beside it, the value with no `=`, the name that is no parameter or
-/// comes twice, the value that is no number or is zero), for a file and a built-in system,
+/// comes twice, the value that is no number or a zero where H has none), for a file and a built-in system,
 /// for search and closure alike: the comma's place was said in words, `after the comma at
 /// column 4`, and the others had no place at all.
 #[test]
@@ -2233,9 +2233,7 @@ fn cli_fix_and_symbolic_refuse_at_their_place_as_when_does() {
             "omega=1,M=0",
             11,
             "^",
-            "M = 0: parameters are fixed to nonzero values (a value the lift back can divide \
-             by); to study the system at M = 0, set it with --when 'M = 0'"
-                .into(),
+            "M = 0: H divides by M, so it has no value at M = 0: give M another value".into(),
         ),
         (
             "--symbolic",

@@ -1787,11 +1787,6 @@ fn bad_search_arguments_exit_2_with_a_message() {
             "A is both fixed to a value and kept symbolic",
         ),
         (
-            "--fix C=0",
-            "--fix: C = 0: parameters are fixed to nonzero values (a value the lift back can \
-             divide by); to study the system at C = 0, set it with --when 'C = 0'",
-        ),
-        (
             "--fix C=two",
             "--fix: 'two' is not a number: write a fraction such as 2/3, or a decimal such as 1.5",
         ),
@@ -1838,19 +1833,50 @@ fn bad_search_arguments_exit_2_with_a_message() {
     }
 }
 
-/// `--fix a=0` is refused with the way to study `a = 0` instead, which for a parameter that a
-/// radicand holds is no condition either: it suggested `--when 'a = 0'`, which is refused.
+/// `--fix a=0` is refused for a parameter that a radicand holds: the two centres' radicands
+/// coincide at `a = 0`, and the radicals are taken as independent.
 #[test]
-fn fixing_a_radicands_parameter_at_zero_suggests_no_condition() {
+fn fixing_a_radicands_parameter_at_zero_is_refused() {
     let out = superint(&["search", "systems/two-centres.toml", "--fix", "a=0"]);
     assert_eq!(out.status.code(), Some(2));
     assert_eq!(
         String::from_utf8_lossy(&out.stderr),
-        "superint: error: <command line>:1:3: --fix: a = 0: parameters are fixed to nonzero \
-         values (a value the lift back can divide by); --when 'a = 0' cannot set it either: the \
-         condition sets a, which the radicand of r = √(x² − 2ax + y² + z² + a²) involves: a \
-         condition on a radicand's variables is not supported (declare the radical with the \
-         value in its radicand instead)\n 1 | a=0\n   |   ^\n"
+        "superint: error: <command line>:1:3: --fix: a = 0: the radicand of r = √(x² − 2ax + y² \
+         + z² + a²) holds a, and at a = 0 it may be a square or another radicand, while the \
+         radicals are taken as independent: give a another value\n 1 | a=0\n   |   ^\n"
+    );
+}
+
+/// Zero is a value as any other for `--fix`, where `H` has one: the Goryachev–Chaplygin top's
+/// `c = 0`, which `--find-values c --on 'A = 0'` reports, searched by hand as the docs say
+/// each value is (`--fix c=0 --on 'A = 0'`), finds the free top's `M3` (nothing lifted back
+/// to `c`); `H = … + M3²/(2 I3)` of the heavy top has no value at `I3 = 0`, which is refused.
+#[test]
+fn a_parameter_is_fixed_at_zero_where_h_has_a_value() {
+    let found = superint_ok(&[
+        "search",
+        "systems/goryachev-chaplygin-top.toml",
+        "--fix",
+        "c=0",
+        "--on",
+        "A = 0",
+        "--poisson-degree",
+        "2",
+    ]);
+    assert!(
+        found.contains("Parameters fixed for the linear algebra: c = 0"),
+        "{found}"
+    );
+    assert!(found.contains("{I2, H} = 0 at c = 0"), "{found}");
+    assert!(found.contains("    I2 = M3\n"), "{found}");
+    let out = superint(&["search", "systems/heavy-top.toml", "--fix", "I3=0"]);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains(
+            "--fix: I3 = 0: H divides by I3, so it has no value at I3 = 0: give I3 another value"
+        ),
+        "{stderr}"
     );
 }
 
