@@ -69,17 +69,17 @@ fn radicals_zero_is_decided_by_reducing() {
         // The root of a square is a polynomial up to its sign: no radical to declare.
         (
             "sqrt(x^2)",
-            "sqrt(x²) is |x|, whose sign superint does not choose: write x where it is not \
+            "sqrt(x²) is |x|, whose sign is for you to choose: write x where it is not \
              negative, and its negative where it is",
         ),
         (
             "sqrt(-4*x^2 - 4*y^2 - 8*x*y)",
-            "sqrt(−4x² − 8xy − 4y²) is i·|2x + 2y|, whose sign superint does not choose: write \
+            "sqrt(−4x² − 8xy − 4y²) is i·|2x + 2y|, whose sign is for you to choose: write \
              i*(2*x + 2*y) where 2x + 2y is not negative, and its negative where it is",
         ),
         (
             "sqrt(x^2/4 - x*y + y^2)",
-            "sqrt(x²/4 − xy + y²) is |x/2 − y|, whose sign superint does not choose: write \
+            "sqrt(x²/4 − xy + y²) is |x/2 − y|, whose sign is for you to choose: write \
              x/2 - y where it is not negative",
         ),
     ] {
@@ -428,7 +428,7 @@ fn radicals_bad_declarations_are_refused_at_their_place() {
         (
             "{ r = \"x^2 + 2*x*y + y^2\" }",
             "bad.toml:6:14: the radicand of r = √(x² + 2xy + y²) is the square of x + y, so the \
-             radical is x + y up to its sign, which superint does not choose: write x + y where it \
+             radical is x + y up to its sign, which is for you to choose: write x + y where it \
              is not negative, and its negative where it is",
         ),
         (

@@ -1054,14 +1054,14 @@ impl<C: Coefficient> Lower<'_, C> {
             return Err(ParseError::new(span, message));
         }
         // A radical of a square, or of minus one, would be refused where it is declared: the
-        // root is a polynomial, up to the sign that superint does not choose.
+        // root is a polynomial, up to a sign that the writer chooses.
         let message = match value.root_up_to_sign() {
             Some((root, false)) => format!(
-                "sqrt({value}) is |{root}|, whose sign superint does not choose: {}",
+                "sqrt({value}) is |{root}|, whose sign is for you to choose: {}",
                 root.sign_advice(false)
             ),
             Some((root, true)) => format!(
-                "sqrt({value}) is i·|{root}|, whose sign superint does not choose: {}",
+                "sqrt({value}) is i·|{root}|, whose sign is for you to choose: {}",
                 root.sign_advice(true)
             ),
             None => {

@@ -223,13 +223,13 @@ impl<C: Coefficient> Poly<C> {
                     // The radicand is the square of a polynomial: the root is known exactly.
                     Some(Some((root, false))) => format!(
                         "the radicand of {} is the square of {root}, so the radical is {root} \
-                         up to its sign, which superint does not choose: {}",
+                         up to its sign, which is for you to choose: {}",
                         names[0],
                         root.sign_advice(false)
                     ),
                     Some(Some((root, true))) => format!(
                         "the radicand of {} is minus the square of {root}, so the radical is \
-                         i({root}) up to its sign, which superint does not choose: {}",
+                         i({root}) up to its sign, which is for you to choose: {}",
                         names[0],
                         root.sign_advice(true)
                     ),
@@ -294,7 +294,7 @@ impl<C: Coefficient> Poly<C> {
 
     /// The root of `self` when it is the square of a polynomial, `(s, false)`, or minus one,
     /// `(s, true)` (then the root is `i·s`), with `s` as [`Poly::square_root`] gives it: what
-    /// a radical of `self` would be, up to the sign that superint does not choose.
+    /// a radical of `self` would be, up to a sign that the writer chooses.
     pub(crate) fn root_up_to_sign(&self) -> Option<(Self, bool)> {
         let negated = || (-self).square_root().map(|root| (root, true));
         self.square_root()
@@ -303,7 +303,7 @@ impl<C: Coefficient> Poly<C> {
     }
 
     /// How a message asks for the root `self` (times `i` when `imaginary`) of a square, whose
-    /// sign superint does not choose: `write x + y where it is not negative, and its negative
+    /// sign the writer chooses: `write x + y where it is not negative, and its negative
     /// where it is`, or `write i*(x + y) where x + y is not negative, …`.
     pub(crate) fn sign_advice(&self, imaginary: bool) -> String {
         match imaginary {
@@ -626,7 +626,7 @@ impl<C: Coefficient> Poly<C> {
     }
 }
 
-/// How a message asks for the root of a square, whose sign superint does not choose:
+/// How a message asks for the root of a square, whose sign is for you to choose:
 /// `write x + y where it is not negative, and its negative where it is`, for `written` the
 /// root as the user writes it and `subject` what its sign is the sign of.
 fn either_sign(written: &str, subject: &str) -> String {
@@ -845,7 +845,7 @@ mod tests {
         assert!(
             err.contains(
                 "the radicand of r = √(−x² − 2xy − y²) is minus the square of x + y, so the \
-                 radical is i(x + y) up to its sign, which superint does not choose: write \
+                 radical is i(x + y) up to its sign, which is for you to choose: write \
                  i*(x + y) where x + y is not negative, and its negative where it is"
             ),
             "{err}"
