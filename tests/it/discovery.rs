@@ -1869,15 +1869,41 @@ fn a_parameter_is_fixed_at_zero_where_h_has_a_value() {
     );
     assert!(found.contains("{I2, H} = 0 at c = 0"), "{found}");
     assert!(found.contains("    I2 = M3\n"), "{found}");
-    let out = superint(&["search", "systems/heavy-top.toml", "--fix", "I3=0"]);
-    assert_eq!(out.status.code(), Some(2));
-    let stderr = String::from_utf8_lossy(&out.stderr);
+    let stderr = superint_refused(&["search", "systems/heavy-top.toml", "--fix", "I3=0"]);
+    let why = "--fix: I3 = 0: H divides by I3, so it has no value at I3 = 0: give I3 another value";
+    assert!(stderr.contains(why), "{stderr}");
+}
+
+/// A known integral that divides by a declared denominator zero at the fixed values has no
+/// value there: `F1` of the Neumann system, an integral for distinct `a_i`, was refused as
+/// 'not an integral: … at a1 = 1, a2 = 1', a bracket taken where it divides by zero; it is
+/// refused saying so, at the values used.
+#[test]
+fn a_known_integral_with_no_value_at_the_fixed_values_is_refused_saying_so() {
+    let neumann = "systems/neumann.toml";
+    let args = |fix| {
+        [
+            "search",
+            neumann,
+            "--new-only",
+            "--known",
+            "F1",
+            "--fix",
+            fix,
+        ]
+    };
+    let stderr = superint_refused(&args("a1=1,a2=1"));
     assert!(
         stderr.contains(
-            "--fix: I3 = 0: H divides by I3, so it has no value at I3 = 0: give I3 another value"
+            "<command line>:1:1: --known: F1 has no value where it is searched: the denominator \
+             (a1 − a2) is zero at a1 = 1, a2 = 1, the values the linear algebra takes"
         ),
         "{stderr}"
     );
+    assert!(!stderr.contains("not an integral"), "{stderr}");
+    // Where it has a value it is an integral, and the search runs.
+    let found = superint_ok(&args("a1=1,a2=2"));
+    assert!(found.contains("a1 = 1, a2 = 2"), "{found}");
 }
 
 /// A negative fixed value prints its sign as the conditions do, `M = −1` in text and markdown

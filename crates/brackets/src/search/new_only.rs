@@ -3,6 +3,7 @@
 
 use trigpoly::{Expr, GaussianRational, Rational, Style, Term, Var, VarKind, Vars};
 
+use crate::clearing::refuse_division_by_zero;
 use crate::error::{EngineError, EngineLimit};
 use crate::modular::{self, sum_by_index, CombinationSums, Echelon, Field, Fp, SparseVec};
 use crate::system::System;
@@ -611,7 +612,9 @@ struct KnownIntegrals {
 }
 
 /// Refuses, before the search, the first known integral given in `options.known` that is not
-/// real or is no integral (under the condition, at the fixed values, `at`; on the level set
+/// real, divides by a declared denominator that vanishes at the fixed values (it has no value
+/// there, and no bracket to test: `F1` of the Neumann system at `a1 = a2 = 1`), or is no
+/// integral (under the condition, at the fixed values, `at`; on the level set
 /// `on`, its bracket with `H` no multiple of the level set's polynomial), by one bracket
 /// with `H` each and before the space's unknowns are formed ([`EngineError::RefusedKnown`],
 /// which says which one by its place in the list).
@@ -632,6 +635,14 @@ pub(super) fn refuse_given_known(
             return Err(refused(format!(
                 "is not real: give its real and imaginary parts, re({name}) and im({name})"
             )));
+        }
+        // Where a denominator that it divides by vanishes, it has no value to test.
+        let atoms = system.space().denominator_atoms();
+        match refuse_division_by_zero(atoms, parameters, std::iter::once(f)) {
+            Err(EngineError::Invalid(why)) => {
+                return Err(refused(format!("has no value where it is searched: {why}")))
+            }
+            checked => checked?,
         }
         let fixed = fix_parameters(f, parameters)?;
         if let Some(level) = on {
