@@ -545,6 +545,21 @@ fn with_parameters(p: &Expr, order: &DivisionOrder) -> DivisionOrder {
     DivisionOrder::graded_lex(&variables)
 }
 
+/// Whether the flow of `H`, its parameters free, keeps the level set of `p` (whose leading
+/// coefficient is a number): `{P, H}` is `P` times a polynomial. A bracket with a negative
+/// power, which division does not take, is not shown kept.
+fn kept_for_every_value(
+    system: &System,
+    p: &Expr,
+    order: &DivisionOrder,
+) -> Result<bool, EngineError> {
+    let flow = system.bracket(p, system.hamiltonian())?;
+    if negative_power(&flow, order).is_some() {
+        return Ok(false);
+    }
+    Ok(p_divide(&flow, p, order)?.remainder.is_zero())
+}
+
 /// What [`LevelSet::check_square_free_and_kept`] checks a level set for, which says where the
 /// flow of `H` must keep it and where `P` must be square-free.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -783,12 +798,16 @@ fn refusal(p: &Expr, e: DivisionRefusal) -> EngineError {
 }
 
 /// The level set as the search takes it: `P` at the fixed parameters, for the equations and
-/// the proofs there, and symbolic where its leading coefficient is a number for every value of
-/// them, for the proofs of the integrals lifted; the order, and `LM(P)` at the fixed values.
+/// the proofs there, and symbolic where its leading coefficient is a number and the flow of `H`
+/// keeps it for every value of them, for the proofs of the integrals lifted; the order, and
+/// `LM(P)` at the fixed values.
 pub(super) struct OnLevel {
     /// `P` at the fixed values.
     pub(super) fixed: Expr,
-    /// `P` with its parameters, where its leading coefficient is a number.
+    /// `P` with its parameters, where its leading coefficient is a number and `{P, H}` a
+    /// multiple of it with them: elsewhere an integral holds on the level set at the fixed
+    /// values alone (`p_x` on `p_y = 0` of `p_x²/2 + p_y²/2 + xy p_y + ay` at `a = 0`, where
+    /// `{p_x, H} = −y p_y` for every `a`, but the flow leaves `p_y = 0` at `a ≠ 0`).
     pub(super) symbolic: Option<Expr>,
     pub(super) order: DivisionOrder,
     /// The exponents of `LM(P)` at the fixed values.
@@ -804,7 +823,10 @@ impl OnLevel {
     ) -> Result<Self, EngineError> {
         let order = LevelSet::order(system);
         let p = level.polynomial()?;
-        let symbolic = p.leading_term(&order).is_ok().then(|| p.clone());
+        let symbolic = match p.leading_term(&order) {
+            Ok(_) if kept_for_every_value(system, &p, &order)? => Some(p.clone()),
+            _ => None,
+        };
         let fixed = fix_parameters(&p, parameters)?;
         let (_, lead) = fixed.leading_term(&order).map_err(|e| refusal(&fixed, e))?;
         Ok(OnLevel {
@@ -1250,6 +1272,30 @@ pub(super) mod tests {
             &p(&format!("{area}^2*({gamma} - 1)")),
             &order
         ));
+    }
+
+    /// A level set kept at the fixed values alone proves its integrals there alone: the flow
+    /// of `p_x²/2 + p_y²/2 + xy p_y + ay` keeps `p_y = 0` at `a = 0` (`{P, H} = −x p_y − a`),
+    /// where `p_x` is found with `{p_x, H} = −y p_y`; that bracket is a multiple of `P` for
+    /// every `a`, but the level set is left at `a ≠ 0`, so nothing is proved for every value.
+    #[test]
+    fn a_level_set_kept_at_the_fixed_values_alone_proves_nothing_for_every_value() {
+        let system = on_the_plane("kept at a = 0", "(p_x^2 + p_y^2)/2 + x*y*p_y + a*y", &["a"]);
+        let a = system.vars().lookup("a").unwrap();
+        let on_p_y = level(&system, "p_y", "0");
+        assert!(on_p_y.check(&system, &[(a, Rational::from(0))]).is_ok());
+        let space = SearchSpace::default().momenta_degree(1).positions_degree(1);
+        let options = SearchOptions::new(space).fix(a, 0).on(on_p_y.clone());
+        let r = search(&system, &options).unwrap();
+        assert_proved_on(&system, &r, &on_p_y.polynomial().unwrap());
+        let p_x = Expr::parse(system.vars(), "p_x").unwrap();
+        let found = r.basis.iter().find(|f| f.fixed == p_x || f.fixed == -&p_x);
+        let found = found.expect("p_x is conserved on p_y = 0 at a = 0");
+        assert!(found.proved_fixed);
+        assert!(r
+            .basis
+            .iter()
+            .all(|f| f.proved_fixed && f.symbolic.is_none()));
     }
 
     /// An ordinary search is at the fixed values, so the flow is checked there: `x² + a y²`
