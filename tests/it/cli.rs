@@ -2145,6 +2145,33 @@ fn refused_at(text: &str, column: usize, caret: &str, message: &str) -> String {
     )
 }
 
+/// `--fix` takes zero, so a known integral or a generator that divides by the parameter has
+/// no value where the linear algebra is: refused naming the parameter (exit 2), for search
+/// and closure alike; it read `division by zero`, naming nothing.
+#[test]
+fn cli_fix_to_zero_of_a_parameter_divided_by_names_it() {
+    let says = "p_θ/ω divides by ω, so it has no value at ω = 0, the value the linear algebra \
+                takes: give ω another value";
+    let known = [
+        "search",
+        "--system",
+        "harmonic",
+        "--fix",
+        "omega=0",
+        "--new-only",
+    ];
+    let closure = [
+        "closure", "--system", "harmonic", "L", "K", "--fix", "omega=0",
+    ];
+    for args in [
+        [&known[..], &["--known", "p_theta/omega"]].concat(),
+        [&closure[..], &["--define", "K=p_theta/omega"]].concat(),
+    ] {
+        let refused = String::from_utf8(superint_exits(&args, 2).stderr).unwrap();
+        assert!(refused.contains(says), "{args:?}: {refused}");
+    }
+}
+
 /// Every refusal of --fix and --symbolic that is about a place in its text says it as --when
 /// does, `<command line>:1:C:` with the option named, the text and a caret under the place
 /// (the comma with nothing beside it, the value with no `=`, the name that is no parameter or

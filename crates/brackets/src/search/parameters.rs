@@ -205,9 +205,22 @@ impl FixedHamiltonianAndCondition {
     }
 }
 
-/// Substitutes parameter values.
+/// Substitutes parameter values; refuses, naming it, a parameter given zero that `e` divides
+/// by (`p_x/a` at `a = 0`), where `e` has no value.
 pub fn fix_parameters(e: &Expr, values: &[(Var, Rational)]) -> Result<Expr, EngineError> {
     let vars = e.vars();
+    let divided_by_zero = values
+        .iter()
+        .find(|(v, x)| x.is_zero() && e.low_degree(*v).unwrap_or(0) < 0);
+    if let Some((v, _)) = divided_by_zero {
+        let name = vars.variable(*v).unicode();
+        return Err(EngineError::Invalid(format!(
+            "{} divides by {name}, so it has no value at {name} = 0, the value the linear \
+             algebra takes: give {name} another value (the options' `fix`; on the command \
+             line, --fix)",
+            e.brief_excerpt()
+        )));
+    }
     let subs: Vec<(Var, Expr)> = values
         .iter()
         .map(|(v, x)| (*v, Expr::constant(vars, GaussianRational::from(x.clone()))))
