@@ -106,19 +106,8 @@ impl LevelSet {
         parameter: Var,
     ) -> Result<(), EngineError> {
         self.check_form(system, "--on")?;
-        let checked =
-            self.check_square_free_and_kept(system, fixed, None, CheckedFor::ExceptionalValues);
-        checked.map_err(|e| match e {
-            EngineError::Invalid(m) if m.starts_with(FLOW_LEAVES) => {
-                let name = system.vars().variable(parameter).unicode();
-                EngineError::Invalid(format!(
-                    "{m}; {name}, searched for, is free here, so the flow must keep the level \
-                     set at every value of {name}: one kept at some values alone (where that \
-                     remainder vanishes) is not searched for exceptional values"
-                ))
-            }
-            e => e,
-        })
+        let checked_for = CheckedFor::ExceptionalValues(parameter);
+        self.check_square_free_and_kept(system, fixed, None, checked_for)
     }
 
     /// [`LevelSet::check`] for a claim, which holds for every value of the parameters, with no
@@ -213,9 +202,20 @@ impl LevelSet {
         }
         let division = p_divide(&flow, &p, &order)?;
         if !division.remainder.is_zero() {
+            let searched_for = match checked_for {
+                CheckedFor::ExceptionalValues(parameter) => {
+                    let name = system.vars().variable(parameter).unicode();
+                    format!(
+                        "; {name}, searched for, is free here, so the flow must keep the level \
+                         set at every value of {name}: one kept at some values alone (where that \
+                         remainder vanishes) is not searched for exceptional values"
+                    )
+                }
+                CheckedFor::Search | CheckedFor::Claim => String::new(),
+            };
             return invalid(format!(
                 "{FLOW_LEAVES}{at}: {{P, H}} = {flow} for P = {p}, which is not P times a \
-                 polynomial (its remainder on division by P is {})",
+                 polynomial (its remainder on division by P is {}){searched_for}",
                 division.remainder
             ));
         }
@@ -566,9 +566,10 @@ fn kept_for_every_value(
 enum CheckedFor {
     /// An ordinary search, at the fixed values: `H` and `P` there.
     Search,
-    /// A search for a parameter's exceptional values: every parameter free (at the fixed
-    /// values only where `P`'s leading coefficient needs them).
-    ExceptionalValues,
+    /// A search for the exceptional values of the parameter it holds: every parameter free (at
+    /// the fixed values only where `P`'s leading coefficient needs them), and a level set kept
+    /// at some values of that parameter alone refused saying so.
+    ExceptionalValues(Var),
     /// A claim, for every value of the parameters: `P` square-free with them too.
     Claim,
 }
