@@ -664,11 +664,9 @@ pub fn command_line_search_report(
     options: &SearchOptions,
     format: Format,
 ) -> Result<(Report, SearchResult), EngineError> {
-    let start = Instant::now();
-    let r = search(system, options)?;
-    let mut report = command_line_report_of(file, name, system, options, format, &r)?;
-    report.seconds = start.elapsed().as_secs_f64();
-    Ok((report, r))
+    searched_and_reported(system, options, |r| {
+        command_line_report_of(file, name, system, options, format, r)
+    })
 }
 
 /// [`command_line_search_report`] of the search `r` already run with `options`: the report
@@ -728,9 +726,21 @@ fn search_report_with(
     restate: Option<&Restate<'_>>,
     facts: bool,
 ) -> Result<(Report, SearchResult), EngineError> {
+    searched_and_reported(system, options, |r| {
+        report_of((name, system), options, (caller, restate, facts), r)
+    })
+}
+
+/// The search of `system` with `options`, and its report by `report`, whose time is that of
+/// both.
+fn searched_and_reported(
+    system: &System,
+    options: &SearchOptions,
+    report: impl FnOnce(&SearchResult) -> Result<Report, EngineError>,
+) -> Result<(Report, SearchResult), EngineError> {
     let start = Instant::now();
     let r = search(system, options)?;
-    let mut report = report_of((name, system), options, (caller, restate, facts), &r)?;
+    let mut report = report(&r)?;
     report.seconds = start.elapsed().as_secs_f64();
     Ok((report, r))
 }
