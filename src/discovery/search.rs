@@ -16,7 +16,7 @@ use crate::report::{
     Report, SearchFacts, Section, SummaryKind,
 };
 
-use crate::system_file::{Caller, LoadedSystem};
+use crate::system_file::{Caller, LoadedSystem, MAX_RESTATED};
 
 use super::{agreeing, off_one_note, parameter_facts, parameter_names, proved_for_every, HeldAt};
 
@@ -695,24 +695,94 @@ pub fn command_line_report_of(
 }
 
 /// How a search's shown integrals, and the amplitudes of their complex forms, are restated
-/// below them: each as a polynomial in the file's named functions, at the search's
-/// condition, where it is one.
+/// below them: each as a polynomial in the file's named functions where it is one, at the
+/// search's condition, and, for one not lifted back to the parameters the search fixed, at
+/// their values too, where alone it holds (`I2 = 2 H` at `a = 12, b = 16` of the quartic
+/// potentials). One lifted holds for every value and is restated for every value or not at
+/// all: at the fixed values it could equal a function that is no integral elsewhere.
 struct Restate<'a> {
     file: &'a LoadedSystem,
     condition: Option<&'a brackets::Condition>,
 }
 
 impl Restate<'_> {
-    /// The shown integrals, in functions and family instances.
-    fn integrals(&self, integrals: &[Expr]) -> Vec<Option<Expr>> {
-        self.file
-            .integrals_in_functions_and_instances(integrals, self.condition)
+    /// The shown integrals, in functions and family instances, those of `unlifted` at
+    /// `at_fixed` ([`Restate::at_fixed_values`]).
+    fn integrals(
+        &self,
+        integrals: &[Expr],
+        unlifted: &[bool],
+        at_fixed: Option<&brackets::Condition>,
+    ) -> Vec<Option<Expr>> {
+        self.where_held(integrals, unlifted, at_fixed, |e, c| {
+            self.file.integrals_in_functions_and_instances(e, c)
+        })
     }
 
-    /// The amplitudes `A` of the shown integrals `Re(A e^{−ikθ})`, in functions.
-    fn amplitudes(&self, amplitudes: &[Expr]) -> Vec<Option<Expr>> {
-        self.file
-            .amplitudes_in_functions(amplitudes, self.condition)
+    /// The amplitudes `A` of the shown integrals `Re(A e^{−ikθ})`, in functions, those of
+    /// `unlifted` integrals at `at_fixed`.
+    fn amplitudes(
+        &self,
+        amplitudes: &[Expr],
+        unlifted: &[bool],
+        at_fixed: Option<&brackets::Condition>,
+    ) -> Vec<Option<Expr>> {
+        self.where_held(amplitudes, unlifted, at_fixed, |e, c| {
+            self.file.amplitudes_in_functions(e, c)
+        })
+    }
+
+    /// The search's condition with the values of the parameters `r` fixed (`text` how it
+    /// reads), where an integral not lifted holds; `None` where nothing is fixed, or where
+    /// the two are no substitution together (then every one is restated at the condition
+    /// alone, an identity still).
+    fn at_fixed_values(&self, r: &SearchResult, text: &str) -> Option<brackets::Condition> {
+        if r.parameters.is_empty() {
+            return None;
+        }
+        let fixed = (r.parameters.iter())
+            .map(|(v, value)| (*v, Expr::constant(&r.vars, value.clone().into())));
+        let subs = (self.condition.iter())
+            .flat_map(|c| c.subs().iter().cloned())
+            .chain(fixed)
+            .collect();
+        brackets::Condition::all(text, subs).ok()
+    }
+
+    /// `restate` of each of `items` at the condition, but those of `unlifted` at `at_fixed`
+    /// where it is given; none of more than [`MAX_RESTATED`] items, as `restate` of them
+    /// all would restate none.
+    fn where_held(
+        &self,
+        items: &[Expr],
+        unlifted: &[bool],
+        at_fixed: Option<&brackets::Condition>,
+        restate: impl Fn(&[Expr], Option<&brackets::Condition>) -> Vec<Option<Expr>>,
+    ) -> Vec<Option<Expr>> {
+        let Some(at_fixed) = at_fixed else {
+            return restate(items, self.condition);
+        };
+        if items.len() > MAX_RESTATED {
+            return vec![None; items.len()];
+        }
+        let of = |kind: bool, at: Option<&brackets::Condition>| {
+            let these: Vec<Expr> = (items.iter().zip(unlifted))
+                .filter(|(_, &u)| u == kind)
+                .map(|(e, _)| e.clone())
+                .collect();
+            match these.is_empty() {
+                true => Vec::new(),
+                false => restate(&these, at),
+            }
+            .into_iter()
+        };
+        let (mut lifted, mut at_values) = (of(false, self.condition), of(true, Some(at_fixed)));
+        (unlifted.iter())
+            .map(|&u| match u {
+                true => at_values.next().flatten(),
+                false => lifted.next().flatten(),
+            })
+            .collect()
     }
 }
 
@@ -1014,9 +1084,26 @@ impl Shared {
         let written = written_forms(r, &self.shown)?;
         // Each in the file's functions and family instances too, where it is a polynomial
         // in them.
-        let restated = restate.map(|f| f.integrals(&written)).unwrap_or_default();
+        // One not lifted, where it holds: at the fixed values.
+        let unlifted: Vec<bool> = (self.shown.iter())
+            .map(|&i| r.for_every_value(i).is_none())
+            .collect();
+        let at_fixed = restate.and_then(|f| f.at_fixed_values(r, &self.held.at(true)?.0));
+        let restated = (restate.map(|f| f.integrals(&written, &unlifted, at_fixed.as_ref())))
+            .unwrap_or_default();
         entries.push(self.shown_equations(r, &written, &restated));
-        entries.extend(self.complex_forms(r, restate));
+        let (complex, amplitudes_at_fixed) = match self.complex_forms(r, restate, at_fixed.as_ref())
+        {
+            Some((entry, labels)) => (Some(entry), labels),
+            None => (None, Vec::new()),
+        };
+        entries.extend(complex);
+        let at_fixed_labels: Vec<String> = (self.shown.iter().zip(&unlifted).zip(&restated))
+            .filter(|((_, &u), w)| u && at_fixed.is_some() && w.is_some())
+            .map(|((&i, _), _)| self.label(i))
+            .chain(amplitudes_at_fixed)
+            .collect();
+        entries.extend(self.restated_at_fixed_note(&at_fixed_labels));
         entries.extend(self.quotients(r));
         entries.extend(self.integral_claims(r, &written));
         entries.extend(self.rest_proved(r));
@@ -1207,34 +1294,67 @@ impl Shared {
 
     /// The shown integrals of trigonometric order `k > 0` as `I = Re(A e^{−ikθ})`, when the
     /// system has one angle and some has such a form, each amplitude `A` restated by
-    /// `restate` below it where one is given and it has a form (`= Z_y`).
-    fn complex_forms(&self, r: &SearchResult, restate: Option<&Restate<'_>>) -> Option<Entry> {
+    /// `restate` below it where one is given and it has a form (`= Z_y`), that of an
+    /// integral not lifted at `at_fixed` ([`Restate::at_fixed_values`]); with the labels of
+    /// those restated there.
+    fn complex_forms(
+        &self,
+        r: &SearchResult,
+        restate: Option<&Restate<'_>>,
+        at_fixed: Option<&brackets::Condition>,
+    ) -> Option<(Entry, Vec<String>)> {
         let k = order_letter(&r.vars);
-        let mut lines: Vec<Equation> = self
+        let (mut lines, unlifted): (Vec<Equation>, Vec<bool>) = self
             .shown
             .iter()
             .filter_map(|&i| {
                 complex_form(r.basis[i].expr()).map(|(a, order)| {
-                    Equation::new(&format!("{}{} ({k} = {order})", self.complex, i + 1), a)
+                    let label = format!("{}{} ({k} = {order})", self.complex, i + 1);
+                    (Equation::new(&label, a), r.for_every_value(i).is_none())
                 })
             })
-            .collect();
+            .unzip();
         let ([theta], false) = (r.variables.angles.as_slice(), lines.is_empty()) else {
             return None;
         };
+        let mut at_fixed_labels = Vec::new();
         if let Some(restate) = restate {
             let amplitudes: Vec<Expr> = lines.iter().map(|l| l.rhs.clone()).collect();
-            for (line, written) in lines.iter_mut().zip(restate.amplitudes(&amplitudes)) {
+            let written = restate.amplitudes(&amplitudes, &unlifted, at_fixed);
+            for ((line, written), u) in lines.iter_mut().zip(written).zip(&unlifted) {
+                if *u && at_fixed.is_some() && written.is_some() {
+                    let label = line.lhs.split(' ').next().unwrap_or_default();
+                    at_fixed_labels.push(label.to_string());
+                }
                 line.in_functions = written;
             }
         }
         let theta = r.vars.variable(*theta).unicode();
-        Some(Entry::Equations(Equations::new(
+        let entry = Entry::Equations(Equations::new(
             format!(
                 "Those of trigonometric order `{k} > 0` as `{} = Re({} e^{{−i{k}{theta}}})`",
                 self.letter, self.complex
             ),
             lines,
+        ));
+        Some((entry, at_fixed_labels))
+    }
+
+    /// That the restatements of `labels`, integrals not lifted (or their amplitudes), are at
+    /// the fixed values, where those hold, not for every value; none where there are none.
+    fn restated_at_fixed_note(&self, labels: &[String]) -> Option<Entry> {
+        let (last, rest) = labels.split_last()?;
+        let (names, they) = match rest {
+            [] => (format!("`{last}`"), "it holds"),
+            _ => {
+                let rest: Vec<String> = rest.iter().map(|l| format!("`{l}`")).collect();
+                (format!("{} and `{last}`", rest.join(", ")), "they hold")
+            }
+        };
+        Some(Entry::Text(format!(
+            "Restated at `{}`, where {they} (not lifted): {names}, with `H` and the file's \
+             functions at these values.",
+            self.held.at(true)?.0
         )))
     }
 

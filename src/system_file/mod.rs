@@ -59,6 +59,7 @@ mod scope;
 mod text;
 mod tower;
 mod written;
+pub(crate) use written::MAX_INTEGRALS as MAX_RESTATED;
 
 pub use claims::{CheckedClaim, ClaimForm, ClaimSpec, CONDITION_USAGE};
 pub use error::{ErrorKind, FileError, Location, UnknownErrorKind, Warning, Warnings};

@@ -63,7 +63,7 @@ const MAX_INSTANCES_TRIED: usize = 60;
 /// The most integrals a search's report restates, each by a linear algebra of its own (a few
 /// milliseconds): one that shows more (the basis of a large space, of hundreds or thousands)
 /// restates none; so with their amplitudes.
-const MAX_INTEGRALS: usize = 32;
+pub(crate) const MAX_INTEGRALS: usize = 32;
 
 /// The most family instances among the functions for one of a search's integrals.
 const MAX_INSTANCES_PER_INTEGRAL: usize = 8;

@@ -6795,3 +6795,55 @@ fn a_built_in_systems_resonant_functions_added_to_a_copy_are_those_it_is_built_w
         );
     }
 }
+
+/// At `--fix` values an integral not lifted back to the parameters holds there only, and is
+/// restated there, `H` and the file's functions with the values put in: the parabolic
+/// integral's companion of the quartic potentials is `2 H` at `a = 12, b = 16` (it was shown
+/// with no form, as `H` with `a, b` free is none of it). One lifted holds for every value
+/// and is not restated at the values: under `H = p²/2 + ay`, `p_x` is `K = p_x + a p_y` at
+/// `a = 0` alone, where `K` is no integral elsewhere; `x p_y − y p_x`, an integral at `a = 0`
+/// only, is `M = x p_y − y p_x + ax` there.
+#[test]
+fn search_at_fixed_values_restates_there_only_what_is_not_lifted() {
+    let quartic = normalize(&superint_ok_line(
+        "search systems/quartic-potentials.toml --fix a=12,b=16 --momenta-degree 2 \
+         --positions-degree 5 --trig-degree 0",
+    ));
+    assert!(
+        quartic.contains("I2 = p_x² + p_y² + 2x⁴ + 24x²y² + 32y⁴ = 2 H")
+            && quartic
+                .contains("Restated at a = 12, b = 16, where they hold (not lifted): I2 and I3,"),
+        "{quartic}"
+    );
+    let text = "name = \"fall\"\nhamiltonian = \"p_x^2/2 + p_y^2/2 + a*y\"\n\
+        [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\"]\n\
+        [[function]]\nname = \"K\"\nvalue = \"p_x + a*p_y\"\n\
+        [[function]]\nname = \"M\"\nvalue = \"x*p_y - y*p_x + a*x\"\n";
+    let file = crate::scratch_text("discovery", "fall.toml", text);
+    let file = file.to_str().expect("a UTF-8 path");
+    let fall = |fix: &str| {
+        normalize(&superint_ok(&[
+            "search",
+            file,
+            "--fix",
+            fix,
+            "--momenta-degree",
+            "1",
+            "--positions-degree",
+            "1",
+        ]))
+    };
+    let at_zero = fall("a=0");
+    assert!(
+        at_zero.contains("I3 = p_x I4 = x p_y − y p_x = M")
+            && at_zero.contains("Restated at a = 0, where it holds (not lifted): I4,")
+            && at_zero.contains("{I3, H} = 0 [I3 proved]"),
+        "{at_zero}"
+    );
+    // Elsewhere `x p_y − y p_x` is no integral, and nothing is restated.
+    let at_one = fall("a=1");
+    assert!(
+        !at_one.contains("x p_y − y p_x") && !at_one.contains("= K") && !at_one.contains("= M"),
+        "{at_one}"
+    );
+}
