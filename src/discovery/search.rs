@@ -562,6 +562,111 @@ fn hamiltonian_note(
     Ok(power_past_parameters_degree(&h, options, caller).map(Entry::Text))
 }
 
+/// A hint where the search found no integral but the powers of `H` in its space, and where a
+/// larger positions degree would hold every weighted-homogeneous polynomial that this one
+/// cuts short: `H` (under the condition, at the fixed values) weighted-homogeneous with
+/// integer weights `w_x` for every coordinate and `w_p` for every momentum, so that each
+/// integral is a sum of weighted-homogeneous ones (the bracket with `H` keeps the weight's
+/// grading), and every polynomial of weight `≤ w_p m` with momenta degree `≤ m` has positions
+/// degree `≤ ⌊w_p m / w_x⌋`: the quartic potentials at `a = 6, b = 8` (weights 1 and 2),
+/// searched at momenta degree 4 and positions degree 4, find `1` and `H` alone, and at
+/// positions degree 8 their quartic integral. None with angles, Poisson variables,
+/// denominators, radicals, negative powers, parameters kept symbolic, `--new-only` or a
+/// level set, nor where no such weights make `H` homogeneous or they are not determined
+/// (`p²/2` alone).
+fn positions_degree_hint(
+    system: &System,
+    options: &SearchOptions,
+    r: &SearchResult,
+    caller: Caller,
+) -> Option<Entry> {
+    if r.module.is_some() || r.new.is_some() || r.on.is_some() || options.space.laurent {
+        return None;
+    }
+    let vars = system.vars();
+    let kinds: Vec<VarKind> = vars.vars().map(|v| vars.variable(v).kind()).collect();
+    let phase_or_parameter = |k: &VarKind| {
+        matches!(
+            k,
+            VarKind::Coordinate | VarKind::Momentum | VarKind::Parameter
+        )
+    };
+    if !kinds.iter().all(phase_or_parameter) {
+        return None;
+    }
+    let mut h = match &options.condition {
+        Some(c) => c.apply(system.hamiltonian()).ok()?,
+        None => system.hamiltonian().clone(),
+    };
+    let fixed: Vec<(Var, Expr)> = (r.parameters.iter())
+        .map(|(v, value)| (*v, Expr::constant(vars, value.clone().into())))
+        .collect();
+    if !fixed.is_empty() {
+        h = h.subst_many(&fixed).ok()?;
+    }
+    // Each term's degrees (positions, momenta); a constant moves nothing.
+    let mut degrees: Vec<(i64, i64)> = Vec::new();
+    for t in h.terms() {
+        let (mut n, mut m) = (0, 0);
+        for (k, &e) in kinds.iter().zip(&t.exponents()) {
+            match (k, e) {
+                (_, 0) => {}
+                (_, e) if e < 0 => return None,
+                (VarKind::Coordinate, e) => n += e,
+                (VarKind::Momentum, e) => m += e,
+                _ => return None,
+            }
+        }
+        if (n, m) != (0, 0) && !degrees.contains(&(n, m)) {
+            degrees.push((n, m));
+        }
+    }
+    // `w_x n + w_p m` the same for every term, with `w_x, w_p > 0` coprime.
+    let (&(n0, m0), rest) = degrees.split_first()?;
+    let &(n1, m1) = rest.first()?;
+    let (dn, dm) = (n1 - n0, m1 - m0);
+    if dn * dm >= 0 {
+        return None;
+    }
+    let g = gcd(dn.abs(), dm.abs());
+    let (w_x, w_p) = (dm.abs() / g, dn.abs() / g);
+    let weight = w_x * n0 + w_p * m0;
+    if rest.iter().any(|&(n, m)| w_x * n + w_p * m != weight) {
+        return None;
+    }
+    // The powers of `H` in the space: `H^k` has positions degree `k n_H` and momenta degree
+    // `k m_H` (the top-degree parts of a product of polynomials do not cancel), and they are
+    // independent integrals; a basis of no more integrals is theirs.
+    let space = &options.space;
+    let (momenta, positions) = (space.momenta_degree as i64, space.positions_degree as i64);
+    let n_h = degrees.iter().map(|d| d.0).max()?;
+    let m_h = degrees.iter().map(|d| d.1).max()?;
+    let powers = (0..)
+        .take_while(|k| k * n_h <= positions && k * m_h <= momenta)
+        .count();
+    let needed = w_p * momenta / w_x;
+    if r.basis.len() != powers || needed <= positions {
+        return None;
+    }
+    let option = caller.names("--positions-degree", "SearchSpace::positions_degree");
+    Some(Entry::Text(format!(
+        "Only the powers of `H` are in this space. `H` is weighted-homogeneous (the \
+         coordinates of weight {w_x}, the momenta of weight {w_p}), so every integral is a sum \
+         of weighted-homogeneous ones, and those of momenta degree `≤ {momenta}` and weight \
+         `≤ {}` may have terms of positions degree up to {needed}, past this space's \
+         {positions}: a space holding them all is `{option} {needed}`.",
+        w_p * momenta
+    )))
+}
+
+/// The greatest common divisor of two integers, `a, b > 0`.
+fn gcd(a: i64, b: i64) -> i64 {
+    match b {
+        0 => a,
+        _ => gcd(b, a % b),
+    }
+}
+
 /// The report of [`search`]: the space, the dimensions by degree, a basis (or, with
 /// `new_only`, a complement of what known integrals generate) written like the paper, and
 /// every basis element proved. `name` is the system as a title names it, its article
@@ -951,6 +1056,7 @@ impl Shared {
         ));
         entries.extend(self.symbolic_note());
         entries.extend(self.dimensions(r, vars));
+        entries.extend(positions_degree_hint(system, options, r, self.caller));
         if self.facts {
             entries.push(self.search_facts(r, vars, for_every_value));
         }

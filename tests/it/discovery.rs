@@ -6847,3 +6847,37 @@ fn search_at_fixed_values_restates_there_only_what_is_not_lifted() {
         "{at_one}"
     );
 }
+
+/// A search that finds only the powers of `H` says which positions degree would hold every
+/// weighted-homogeneous integral of its momenta degree, where `H` is weighted-homogeneous: the
+/// quartic potentials at `a = 6, b = 8` (positions of weight 1, momenta of weight 2) at
+/// momenta and positions degree 4 find `1` and `H`, and the hint's `--positions-degree 8`
+/// finds the file's quartic integral `Q`, where no hint is given. Hénon–Heiles, `H` not
+/// weighted-homogeneous (`x² + y²` beside `x²y`), gets none.
+#[test]
+fn a_search_finding_only_powers_of_h_names_the_positions_degree_to_try() {
+    let quartic = |positions: &str| {
+        normalize(&superint_ok_line(&format!(
+            "search systems/quartic-potentials.toml --fix a=6,b=8 --momenta-degree 4 \
+             --positions-degree {positions} --trig-degree 0"
+        )))
+    };
+    let hint = "a space holding them all is --positions-degree 8.";
+    let short = quartic("4");
+    assert!(
+        short.contains("Dimension of the space of integrals: 2.")
+            && short.contains("(the coordinates of weight 1, the momenta of weight 2)")
+            && short.contains(hint),
+        "{short}"
+    );
+    let full = quartic("8");
+    assert!(full.contains("= Q") && !full.contains(hint), "{full}");
+    let henon = normalize(&superint_ok_line(
+        "search systems/henon-heiles.toml --momenta-degree 2 --positions-degree 2 \
+         --trig-degree 0",
+    ));
+    assert!(
+        henon.contains("Dimension of the space of integrals: 1.") && !henon.contains("weighted"),
+        "{henon}"
+    );
+}
