@@ -1049,7 +1049,7 @@ impl Shared {
             .count();
         entries.extend(parameter_notes(
             r,
-            vars,
+            system,
             self.held.fixed(),
             for_every_value,
             self.caller,
@@ -1508,7 +1508,7 @@ impl Shared {
 /// not lifted, how to see it for every value.
 fn parameter_notes(
     r: &SearchResult,
-    vars: &Vars,
+    system: &System,
     fixed: &str,
     for_every_value: usize,
     caller: Caller,
@@ -1517,13 +1517,14 @@ fn parameter_notes(
     if r.parameters.is_empty() {
         return notes;
     }
+    let vars = system.vars();
     let lift = how_lifted(r, for_every_value);
     let off_one = off_one_note(vars, r.denominator_zero_at_one);
     notes.push(Entry::Text(format!(
         "Parameters fixed for the linear algebra: `{fixed}`{off_one}; {lift}."
     )));
     if !(r.liftable && r.all_symbolic()) {
-        notes.push(Entry::Text(unlifted_note(r, vars, caller)));
+        notes.push(Entry::Text(unlifted_note(r, system, caller)));
     }
     notes
 }
@@ -1555,32 +1556,49 @@ fn how_lifted(r: &SearchResult, for_every_value: usize) -> String {
 
 /// For what is not lifted: that it holds at the fixed values, and how to see it for every
 /// value (`--symbolic`, `SearchOptions::symbolic`) or at others (`--fix`,
-/// `SearchOptions::fix`).
-fn unlifted_note(r: &SearchResult, vars: &Vars, caller: Caller) -> String {
+/// `SearchOptions::fix`); on a level set, other values only where it is searched at them
+/// ([`LevelSet::check`](brackets::search::LevelSet::check)), else that it is refused there.
+fn unlifted_note(r: &SearchResult, system: &System, caller: Caller) -> String {
+    let vars = system.vars();
     let names: Vec<&str> = r
         .parameters
         .iter()
         .map(|(v, _)| vars.variable(*v).name())
         .collect();
-    let others = other_values(&r.parameters, &names);
+    let others = other_values(&r.parameters);
+    let shown: Vec<String> = (others.iter().zip(&names))
+        .map(|((_, value), n)| format!("{n}={value}"))
+        .collect();
+    let refused = (r.on.as_ref()).is_some_and(|on| on.level.check(system, &others).is_err());
     let how = match caller {
-        // On a level set nothing is kept symbolic: other values are what is left.
+        // On a level set nothing is kept symbolic: other values are what is left, those it is
+        // searched at.
+        Caller::CommandLine if refused => format!(
+            "compare with other values the level set is searched at (`--fix`; it is refused \
+             at `{}`)",
+            shown.join(", ").replace('=', " = ")
+        ),
+        Caller::Program if refused => format!(
+            "compare with other values the level set is searched at (`SearchOptions::fix`; \
+             it is refused at {})",
+            shown.join(", ").replace('=', " = ")
+        ),
         Caller::CommandLine if r.on.is_some() => {
-            format!("compare with other values (`--fix {}`)", others.join(","))
+            format!("compare with other values (`--fix {}`)", shown.join(","))
         }
         Caller::Program if r.on.is_some() => format!(
             "compare with other values (`SearchOptions::fix`, such as {})",
-            others.join(", ").replace('=', " = ")
+            shown.join(", ").replace('=', " = ")
         ),
         Caller::CommandLine => format!(
             "keep them symbolic (`--symbolic {}`), or compare with other values (`--fix {}`)",
             names.join(","),
-            others.join(",")
+            shown.join(",")
         ),
         Caller::Program => format!(
             "keep them symbolic (`SearchOptions::symbolic`), or compare with other values \
              (`SearchOptions::fix`, such as {})",
-            others.join(", ").replace('=', " = ")
+            shown.join(", ").replace('=', " = ")
         ),
     };
     format!(
@@ -1590,21 +1608,20 @@ fn unlifted_note(r: &SearchResult, vars: &Vars, caller: Caller) -> String {
     )
 }
 
-/// `name=p` for each fixed parameter, at distinct primes, none the value a parameter has now
-/// (`--fix a=2,b=3` was told to compare with `--fix a=2,b=3`).
-fn other_values(parameters: &[(Var, Rational)], names: &[&str]) -> Vec<String> {
+/// Other values for the fixed `parameters`, to compare with: the first primes, each
+/// parameter another, none at its value now.
+fn other_values(parameters: &[(Var, Rational)]) -> Vec<(Var, Rational)> {
     let mut primes = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47]
         .into_iter()
         .cycle();
     parameters
         .iter()
-        .zip(names)
-        .map(|((_, now), n)| {
+        .map(|(v, now)| {
             let p = primes
                 .by_ref()
                 .find(|&p| *now != Rational::from(p))
                 .expect("the primes cycle");
-            format!("{n}={p}")
+            (*v, Rational::from(p))
         })
         .collect()
 }
@@ -1770,6 +1787,10 @@ pub(super) fn level_set_shown(on: &SearchedLevel) -> String {
 /// a normal form outside it (at the parameters' values, where they are `fixed`), that only
 /// those whose normal form lies in the space are found.
 fn level_set_text(on: &SearchedLevel, fixed: bool) -> String {
+    let kept_at = match fixed && !on.kept_for_every_value {
+        true => " at the fixed values",
+        false => "",
+    };
     let outside = match &on.normal_form_outside {
         Some(o) => format!(
             " Only those whose normal form lies in the space are found: the space's degree \
@@ -1783,7 +1804,7 @@ fn level_set_text(on: &SearchedLevel, fixed: bool) -> String {
         None => String::new(),
     };
     let text = format!(
-        "On the level set `{}`, of `P = {}`, which the flow of `H` keeps (`{{P, H}}` is a \
+        "On the level set `{}`, of `P = {}`, which the flow of `H` keeps{} (`{{P, H}}` is a \
          multiple of `P`): the monomials divisible by its leading monomial `{}` (graded \
          lexicographic order) are left out, {} (each is a combination of lower ones where \
          `P = 0`), and each bracket `{{φ, H}}` is taken modulo `P`. The integrals found are \
@@ -1791,6 +1812,7 @@ fn level_set_text(on: &SearchedLevel, fixed: bool) -> String {
          conserved on the level set, and none of them is a multiple of `P`.",
         level_set_shown(on),
         on.polynomial,
+        kept_at,
         on.leading_monomial,
         counted(on.left_out, "unknown"),
     );

@@ -6881,3 +6881,39 @@ fn a_search_finding_only_powers_of_h_names_the_positions_degree_to_try() {
         "{henon}"
     );
 }
+
+/// On a level set the flow of `H` keeps only at the fixed values, the report says so, and
+/// suggests no other value where the level set is refused: `p_y = 0` of
+/// `p_x²/2 + p_y²/2 + xy p_y + ay` is kept at `a = 0` alone, and refused at `a = 2` (it was
+/// suggested, `--fix a=2`); `H = 1` of the 1:2 oscillator, kept for every value, is said kept
+/// with no such words, and other values are suggested.
+#[test]
+fn a_level_set_kept_at_the_fixed_values_alone_says_so_and_suggests_no_refused_value() {
+    let text = "name = \"sheared\"\nhamiltonian = \"p_x^2/2 + p_y^2/2 + x*y*p_y + a*y\"\n\
+        [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\"]\n";
+    let file = crate::scratch_text("discovery", "sheared.toml", text);
+    let file = file.to_str().expect("a UTF-8 path");
+    let search = |fix: &str| {
+        let args = ["search", file, "--fix", fix, "--on", "p_y = 0"];
+        let degrees = ["--momenta-degree", "1", "--positions-degree", "1"];
+        superint(&[&args[..], &degrees].concat())
+    };
+    let out = search("a=0");
+    let at_zero = normalize(&String::from_utf8(out.stdout).expect("UTF-8"));
+    assert!(
+        at_zero.contains("which the flow of H keeps at the fixed values")
+            && at_zero.contains("it is refused at a = 2)")
+            && !at_zero.contains("--fix a=2"),
+        "{at_zero}"
+    );
+    assert_eq!(search("a=2").status.code(), Some(2));
+    let oscillator = normalize(&superint_ok_line(
+        "search systems/anisotropic-oscillator-1-2.toml --on 'H = 1' --fix M=1,omega=1 \
+         --momenta-degree 3 --positions-degree 3",
+    ));
+    assert!(
+        oscillator.contains("which the flow of H keeps ({P, H} is a multiple of P)")
+            && oscillator.contains("compare with other values (--fix M=2,omega=3)"),
+        "{oscillator}"
+    );
+}

@@ -53,6 +53,9 @@ impl Integral {
 pub struct SearchedLevel {
     /// The level set as given.
     pub level: LevelSet,
+    /// Whether the flow of `H` keeps it for every value of the parameters, not only at the
+    /// fixed values.
+    pub kept_for_every_value: bool,
     /// `P = expr − value`, with its parameters.
     pub polynomial: Expr,
     /// `LM(P)` at the fixed values.
