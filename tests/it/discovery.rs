@@ -6917,3 +6917,31 @@ fn a_level_set_kept_at_the_fixed_values_alone_says_so_and_suggests_no_refused_va
         "{oscillator}"
     );
 }
+
+/// A known integral refused under `--symbolic` shows its bracket with `H` over common
+/// denominators: of the Neumann system, `x1² + L2²/(a1 − a3)` has
+/// `{·, H} = −2 L3 x1 x2` (it was shown `−2 L2 x1 x3 (a1 − a3)/(a1 − a3) + 2 L2 x1 x3 − …`,
+/// the declared denominator not cancelled against its polynomial).
+#[test]
+fn a_refused_known_integral_shows_its_bracket_with_denominators_cancelled() {
+    let refused = superint_refused(&[
+        "search",
+        "systems/neumann.toml",
+        "--poisson-degree",
+        "2",
+        "--denominators-degree",
+        "1",
+        "--symbolic",
+        "a1,a2,a3",
+        "--parameters-degree",
+        "1",
+        "--new-only",
+        "--known",
+        "x1^2 + L2^2/(a1 - a3)",
+    ]);
+    assert!(
+        refused.contains("is not an integral: {x1² + L2²/(a1 − a3), H} = −2 L3 x1 x2")
+            && !refused.contains("(a1 − a3)/(a1 − a3)"),
+        "{refused}"
+    );
+}

@@ -722,13 +722,22 @@ fn known_integrals(
 /// Why a known integral `name` whose bracket with `H` is `flow`, not zero, is refused, after
 /// its name: `is not an integral: ` and the bracket (or its size, when long) and where it was
 /// taken, under the condition and at the fixed values, where it may vanish only; on a level
-/// set, that it is none there: the bracket is no multiple of its polynomial.
+/// set, that it is none there: the bracket is no multiple of its polynomial. The bracket is
+/// shown over common denominators ([`Expr::over_common_denominators`]).
 fn not_an_integral(
     name: &str,
     flow: &Expr,
     options: &SearchOptions,
     parameters: &[(Var, Rational)],
 ) -> String {
+    // Over common denominators, so that a parameter's polynomial and a declared denominator
+    // of it cancel (`(a1 − a3)/(a1 − a3)` was shown so); a long one is shown by its size.
+    let flow = match flow.len() <= 200 {
+        true => flow
+            .over_common_denominators()
+            .unwrap_or_else(|_| flow.clone()),
+        false => flow.clone(),
+    };
     let shown = flow.render(Style::Unicode);
     let bracket = match shown.chars().count() {
         0..=200 => format!("{{{name}, H}} = {shown}"),
