@@ -799,6 +799,10 @@ pub fn command_line_report_of(
     )
 }
 
+/// How [`Restate::restated`] restates expressions of a file at a condition: one form (or
+/// none) for each.
+type RestateWith = fn(&LoadedSystem, &[Expr], Option<&brackets::Condition>) -> Vec<Option<Expr>>;
+
 /// How a search's shown integrals, and the amplitudes of their complex forms, are restated
 /// below them: each as a polynomial in the file's named functions where it is one, at the
 /// search's condition, and, for one not lifted back to the parameters the search fixed, at
@@ -811,32 +815,6 @@ struct Restate<'a> {
 }
 
 impl Restate<'_> {
-    /// The shown integrals, in functions and family instances, those of `unlifted` at
-    /// `at_fixed` ([`Restate::at_fixed_values`]).
-    fn integrals(
-        &self,
-        integrals: &[Expr],
-        unlifted: &[bool],
-        at_fixed: Option<&brackets::Condition>,
-    ) -> Vec<Option<Expr>> {
-        self.where_held(integrals, unlifted, at_fixed, |e, c| {
-            self.file.integrals_in_functions_and_instances(e, c)
-        })
-    }
-
-    /// The amplitudes `A` of the shown integrals `Re(A e^{−ikθ})`, in functions, those of
-    /// `unlifted` integrals at `at_fixed`.
-    fn amplitudes(
-        &self,
-        amplitudes: &[Expr],
-        unlifted: &[bool],
-        at_fixed: Option<&brackets::Condition>,
-    ) -> Vec<Option<Expr>> {
-        self.where_held(amplitudes, unlifted, at_fixed, |e, c| {
-            self.file.amplitudes_in_functions(e, c)
-        })
-    }
-
     /// The search's condition with the values of the parameters `r` fixed (`text` how it
     /// reads), where an integral not lifted holds; `None` where nothing is fixed, or where
     /// the two are no substitution together (then every one is restated at the condition
@@ -854,18 +832,20 @@ impl Restate<'_> {
         brackets::Condition::all(text, subs).ok()
     }
 
-    /// `restate` of each of `items` at the condition, but those of `unlifted` at `at_fixed`
-    /// where it is given; none of more than [`MAX_RESTATED`] items, as `restate` of them
-    /// all would restate none.
-    fn where_held(
+    /// Each of `items` restated by `restate` (the shown integrals by
+    /// [`LoadedSystem::integrals_in_functions_and_instances`], their amplitudes by
+    /// [`LoadedSystem::amplitudes_in_functions`]) at the condition, but those of `unlifted`
+    /// at `at_fixed` ([`Restate::at_fixed_values`]) where it is given; none of more than
+    /// [`MAX_RESTATED`] items, as `restate` of them all would restate none.
+    fn restated(
         &self,
         items: &[Expr],
         unlifted: &[bool],
         at_fixed: Option<&brackets::Condition>,
-        restate: impl Fn(&[Expr], Option<&brackets::Condition>) -> Vec<Option<Expr>>,
+        restate: RestateWith,
     ) -> Vec<Option<Expr>> {
         let Some(at_fixed) = at_fixed else {
-            return restate(items, self.condition);
+            return restate(self.file, items, self.condition);
         };
         if items.len() > MAX_RESTATED {
             return vec![None; items.len()];
@@ -877,7 +857,7 @@ impl Restate<'_> {
                 .collect();
             match these.is_empty() {
                 true => Vec::new(),
-                false => restate(&these, at),
+                false => restate(self.file, &these, at),
             }
             .into_iter()
         };
@@ -1195,8 +1175,15 @@ impl Shared {
             .map(|&i| r.for_every_value(i).is_none())
             .collect();
         let at_fixed = restate.and_then(|f| f.at_fixed_values(r, &self.held.at(true)?.0));
-        let restated = (restate.map(|f| f.integrals(&written, &unlifted, at_fixed.as_ref())))
-            .unwrap_or_default();
+        let restated = (restate.map(|f| {
+            f.restated(
+                &written,
+                &unlifted,
+                at_fixed.as_ref(),
+                LoadedSystem::integrals_in_functions_and_instances,
+            )
+        }))
+        .unwrap_or_default();
         entries.push(self.shown_equations(r, &written, &restated));
         let (complex, amplitudes_at_fixed) = match self.complex_forms(r, restate, at_fixed.as_ref())
         {
@@ -1426,7 +1413,12 @@ impl Shared {
         let mut at_fixed_labels = Vec::new();
         if let Some(restate) = restate {
             let amplitudes: Vec<Expr> = lines.iter().map(|l| l.rhs.clone()).collect();
-            let written = restate.amplitudes(&amplitudes, &unlifted, at_fixed);
+            let written = restate.restated(
+                &amplitudes,
+                &unlifted,
+                at_fixed,
+                LoadedSystem::amplitudes_in_functions,
+            );
             for ((line, written), u) in lines.iter_mut().zip(written).zip(&unlifted) {
                 if *u && at_fixed.is_some() && written.is_some() {
                     let label = line.lhs.split(' ').next().unwrap_or_default();
