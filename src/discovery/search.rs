@@ -568,7 +568,10 @@ fn hamiltonian_note(
 /// integer weights `w_x` for every coordinate and `w_p` for every momentum, so that each
 /// integral is a sum of weighted-homogeneous ones (the bracket with `H` keeps the weight's
 /// grading), and every polynomial of weight `≤ w_p m` with momenta degree `≤ m` has positions
-/// degree `≤ ⌊w_p m / w_x⌋`: the quartic potentials at `a = 6, b = 8` (weights 1 and 2),
+/// degree `≤ ⌊w_p m / w_x⌋`; one of greater weight `W` (coordinates in its terms of top
+/// momenta degree) may need up to `⌊W / w_x⌋`, and no bound holds them all, so the hint names
+/// the weights it covers, and those this space rules out (`≤ w_x n`, `n` its positions
+/// degree): the quartic potentials at `a = 6, b = 8` (weights 1 and 2),
 /// searched at momenta degree 4 and positions degree 4, find `1` and `H` alone, and at
 /// positions degree 8 their quartic integral. None with angles, Poisson variables,
 /// denominators, radicals, negative powers, parameters kept symbolic, `--new-only` or a
@@ -649,12 +652,19 @@ fn positions_degree_hint(
         return None;
     }
     let option = caller.names("--positions-degree", "SearchSpace::positions_degree");
+    let held = w_x * positions;
+    let up_to = match w_x {
+        1 => "W".to_string(),
+        _ => format!("⌊W/{w_x}⌋"),
+    };
     Some(Entry::Text(format!(
         "Only the powers of `H` are in this space. `H` is weighted-homogeneous (the \
          coordinates of weight {w_x}, the momenta of weight {w_p}), so every integral is a sum \
-         of weighted-homogeneous ones, and those of momenta degree `≤ {momenta}` and weight \
-         `≤ {}` may have terms of positions degree up to {needed}, past this space's \
-         {positions}: a space holding them all is `{option} {needed}`.",
+         of weighted-homogeneous ones, and this space holds every polynomial of momenta degree \
+         `≤ {momenta}` and weight `≤ {held}`: there is no integral of momenta degree \
+         `≤ {momenta}` and weight `≤ {held}` but the powers of `H`. Of momenta degree \
+         `≤ {momenta}`, those of weight `≤ {}` are held by `{option} {needed}`, and one of a \
+         greater weight `W` needs positions degree up to `{up_to}`.",
         w_p * momenta
     )))
 }

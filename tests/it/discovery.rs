@@ -6849,7 +6849,8 @@ fn search_at_fixed_values_restates_there_only_what_is_not_lifted() {
 }
 
 /// A search that finds only the powers of `H` says which positions degree would hold every
-/// weighted-homogeneous integral of its momenta degree, where `H` is weighted-homogeneous: the
+/// weighted-homogeneous integral of its momenta degree whose weight is that of its momenta
+/// alone, where `H` is weighted-homogeneous: the
 /// quartic potentials at `a = 6, b = 8` (positions of weight 1, momenta of weight 2) at
 /// momenta and positions degree 4 find `1` and `H`, and the hint's `--positions-degree 8`
 /// finds the file's quartic integral `Q`, where no hint is given. Hénon–Heiles, `H` not
@@ -6862,7 +6863,7 @@ fn a_search_finding_only_powers_of_h_names_the_positions_degree_to_try() {
              --positions-degree {positions} --trig-degree 0"
         )))
     };
-    let hint = "a space holding them all is --positions-degree 8.";
+    let hint = "those of weight ≤ 8 are held by --positions-degree 8,";
     let short = quartic("4");
     assert!(
         short.contains("Dimension of the space of integrals: 2.")
@@ -6944,4 +6945,35 @@ fn a_refused_known_integral_shows_its_bracket_with_denominators_cancelled() {
             && !refused.contains("(a1 − a3)/(a1 − a3)"),
         "{refused}"
     );
+}
+
+/// The positions-degree hint claims no more than its weights prove: at `a = 12, b = 16` the
+/// quartic potentials' parabolic integral `P = x p_x p_y − y p_x² + 4x⁴y + 8x²y³` has momenta
+/// degree 2 but weight 5, past the `2 · 2 = 4` of the momenta alone, so the hint at momenta
+/// degree 2 and positions degree 3 names `--positions-degree 4` for the integrals of weight
+/// `≤ 4` only (none there but the powers of `H`), says one of greater weight `W` needs
+/// positions degree up to `W`, and says what this space rules out (weight `≤ 3`); `P` is found
+/// at positions degree 5, not 4.
+#[test]
+fn the_positions_degree_hint_bounds_only_integrals_of_the_weight_it_names() {
+    let parabolic = |positions: &str| {
+        normalize(&superint_ok_line(&format!(
+            "search systems/quartic-potentials.toml --fix a=12,b=16 --momenta-degree 2 \
+             --positions-degree {positions} --trig-degree 0"
+        )))
+    };
+    let short = parabolic("3");
+    assert!(
+        short.contains("no integral of momenta degree ≤ 2 and weight ≤ 3 but the powers of H")
+            && short.contains("those of weight ≤ 4 are held by --positions-degree 4")
+            && short.contains("one of a greater weight W needs positions degree up to W"),
+        "{short}"
+    );
+    let four = parabolic("4");
+    assert!(
+        four.contains("Dimension of the space of integrals: 2.") && !four.contains("= P"),
+        "{four}"
+    );
+    let five = parabolic("5");
+    assert!(five.contains("= P"), "{five}");
 }
