@@ -1407,16 +1407,19 @@ impl Shared {
         at_fixed: Option<&brackets::Condition>,
     ) -> Option<(Entry, Vec<String>)> {
         let k = order_letter(&r.vars);
-        let (mut lines, unlifted): (Vec<Equation>, Vec<bool>) = self
+        // Each line with its amplitude's label (`A3`) and whether its integral is not lifted.
+        let (mut lines, shown): (Vec<Equation>, Vec<(String, bool)>) = self
             .shown
             .iter()
             .filter_map(|&i| {
                 complex_form(r.basis[i].expr()).map(|(a, order)| {
-                    let label = format!("{}{} ({k} = {order})", self.complex, i + 1);
-                    (Equation::new(&label, a), r.for_every_value(i).is_none())
+                    let amplitude = format!("{}{}", self.complex, i + 1);
+                    let line = Equation::new(&format!("{amplitude} ({k} = {order})"), a);
+                    (line, (amplitude, r.for_every_value(i).is_none()))
                 })
             })
             .unzip();
+        let unlifted: Vec<bool> = shown.iter().map(|(_, u)| *u).collect();
         let ([theta], false) = (r.variables.angles.as_slice(), lines.is_empty()) else {
             return None;
         };
@@ -1429,10 +1432,9 @@ impl Shared {
                 at_fixed,
                 LoadedSystem::amplitudes_in_functions,
             );
-            for ((line, written), u) in lines.iter_mut().zip(written).zip(&unlifted) {
+            for ((line, written), (amplitude, u)) in lines.iter_mut().zip(written).zip(&shown) {
                 if *u && at_fixed.is_some() && written.is_some() {
-                    let label = line.lhs.split(' ').next().unwrap_or_default();
-                    at_fixed_labels.push(label.to_string());
+                    at_fixed_labels.push(amplitude.clone());
                 }
                 line.in_functions = written;
             }
