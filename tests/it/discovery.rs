@@ -6857,21 +6857,16 @@ fn search_at_fixed_values_restates_there_only_what_is_not_lifted() {
 /// weighted-homogeneous (`x² + y²` beside `x²y`), gets none.
 #[test]
 fn a_search_finding_only_powers_of_h_names_the_positions_degree_to_try() {
-    let quartic = |positions: &str| {
-        normalize(&superint_ok_line(&format!(
-            "search systems/quartic-potentials.toml --fix a=6,b=8 --momenta-degree 4 \
-             --positions-degree {positions} --trig-degree 0"
-        )))
-    };
+    let quartic = |positions| quartic_potentials_search("a=6,b=8", 4, positions);
     let hint = "those of weight ≤ 8 are held by --positions-degree 8,";
-    let short = quartic("4");
+    let short = quartic(4);
     assert!(
         short.contains("Dimension of the space of integrals: 2.")
             && short.contains("(the coordinates of weight 1, the momenta of weight 2)")
             && short.contains(hint),
         "{short}"
     );
-    let full = quartic("8");
+    let full = quartic(8);
     assert!(full.contains("= Q") && !full.contains(hint), "{full}");
     let henon = normalize(&superint_ok_line(
         "search systems/henon-heiles.toml --momenta-degree 2 --positions-degree 2 \
@@ -6956,24 +6951,28 @@ fn a_refused_known_integral_shows_its_bracket_with_denominators_cancelled() {
 /// at positions degree 5, not 4.
 #[test]
 fn the_positions_degree_hint_bounds_only_integrals_of_the_weight_it_names() {
-    let parabolic = |positions: &str| {
-        normalize(&superint_ok_line(&format!(
-            "search systems/quartic-potentials.toml --fix a=12,b=16 --momenta-degree 2 \
-             --positions-degree {positions} --trig-degree 0"
-        )))
-    };
-    let short = parabolic("3");
+    let parabolic = |positions| quartic_potentials_search("a=12,b=16", 2, positions);
+    let short = parabolic(3);
     assert!(
         short.contains("no integral of momenta degree ≤ 2 and weight ≤ 3 but the powers of H")
             && short.contains("those of weight ≤ 4 are held by --positions-degree 4")
             && short.contains("one of a greater weight W needs positions degree up to W"),
         "{short}"
     );
-    let four = parabolic("4");
+    let four = parabolic(4);
     assert!(
         four.contains("Dimension of the space of integrals: 2.") && !four.contains("= P"),
         "{four}"
     );
-    let five = parabolic("5");
+    let five = parabolic(5);
     assert!(five.contains("= P"), "{five}");
+}
+
+/// The report of `superint search` on the quartic potentials at `fix`, of no angles, momenta
+/// degree `momenta` and positions degree `positions`, normalized.
+fn quartic_potentials_search(fix: &str, momenta: u32, positions: u32) -> String {
+    normalize(&superint_ok_line(&format!(
+        "search systems/quartic-potentials.toml --fix {fix} --momenta-degree {momenta} \
+         --positions-degree {positions} --trig-degree 0"
+    )))
 }
