@@ -220,11 +220,28 @@ pub struct ExceptionalFacts {
     /// How many of its roots are real (none: no other real value has more integrals in the
     /// space); `None` when none is left.
     pub unexamined_real_roots: Option<usize>,
+    /// The irrational and complex roots of the determinants shown to hold no more integrals
+    /// in the space; `None` when none was.
+    pub ruled_out: Option<RuledOutFacts>,
     /// The largest block's minor: its size and the degree of its determinant.
     pub largest_minor: (usize, usize),
     /// Whether `0`, a root of a determinant, was left out: `H` holds a negative power of the
     /// parameter and has no value there.
     pub zero_left_out: bool,
+}
+
+/// The roots, not rational, of the determinants at which every block keeps its generic rank,
+/// so that none holds more integrals in the space.
+#[derive(Clone, Debug)]
+pub struct RuledOutFacts {
+    /// The polynomial in the parameter whose roots they are, in ASCII.
+    pub polynomial: String,
+    /// How many roots (its degree).
+    pub roots: usize,
+    /// How many of them are real.
+    pub real_roots: usize,
+    /// The prime modulo which the blocks' minors were taken.
+    pub prime: Option<u64>,
 }
 
 /// A value of the parameter searched at, the dimension of the space of integrals there and
@@ -271,9 +288,17 @@ impl ExceptionalFacts {
             not_exceptional,
             unexamined,
             unexamined_real_roots,
+            ruled_out: None,
             largest_minor,
             zero_left_out,
         }
+    }
+
+    /// The facts with the roots ruled out (`None`: none was).
+    #[must_use]
+    pub fn with_ruled_out(mut self, ruled_out: Option<RuledOutFacts>) -> Self {
+        self.ruled_out = ruled_out;
+        self
     }
 }
 

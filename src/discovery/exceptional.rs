@@ -8,7 +8,9 @@ use brackets::System;
 use trigpoly::Style;
 
 use crate::report::{counted, listed};
-use crate::report::{Entry, ExceptionalFacts, Facts, Report, Section, SummaryKind, ValueFacts};
+use crate::report::{
+    Entry, ExceptionalFacts, Facts, Report, RuledOutFacts, Section, SummaryKind, ValueFacts,
+};
 use crate::system_file::Caller;
 
 use super::search::level_set_shown;
@@ -107,10 +109,22 @@ pub fn exceptional_values_report(
     let real_roots = unexamined
         .as_ref()
         .map(|_| found.unexamined.real_root_count());
+    let ruled_out = &found.ruled_out;
+    let ruled_out_real = (ruled_out.count() > 0).then(|| ruled_out.factor.real_root_count());
+    let prime = ruled_out
+        .prime
+        .map_or(String::new(), |p| format!(" p = {p}"));
+    // The roots ruled out, as a clause: "58 roots (not rational; 50 real)".
+    let ruled_out_roots = ruled_out_real.map(|real| {
+        format!(
+            "{} (not rational; {real} real)",
+            counted(ruled_out.count(), "root")
+        )
+    });
     entries.push(Entry::Text(match (&unexamined, real_roots) {
         (Some(p), Some(real)) => {
             let shown = unexamined_shown(p, found.unexamined.degree().unwrap_or(0), whole, caller);
-            match real {
+            let left = match real {
                 0 => format!(
                     "The determinants' other roots, those of {shown}, are none of them real: no \
                      other real value of `{t}` has more integrals in this space (the complex ones \
@@ -118,11 +132,27 @@ pub fn exceptional_values_report(
                 ),
                 real => format!(
                     "Other values may lie among the roots of {shown}, which are not rational \
-                     ({real} of them real): not examined."
+                     ({real} of them real): at each, every minor tried of some block vanishes, so \
+                     that it may hold more integrals (not examined: they are not rational)."
                 ),
+            };
+            match &ruled_out_roots {
+                Some(roots) => format!(
+                    "{left} The determinants' other {roots} hold no more integrals in this \
+                     space: at each, every block of the equations keeps its generic rank (shown \
+                     modulo the prime{prime})."
+                ),
+                None => left,
             }
         }
-        _ => format!("Every root of the determinants is rational: no other value of `{t}` has more integrals in this space."),
+        _ => match &ruled_out_roots {
+            Some(roots) => format!(
+                "The determinants' other {roots} hold no more integrals in this space: at each, \
+                 every block of the equations keeps its generic rank (shown modulo the \
+                 prime{prime}). No value of `{t}` but those above has more integrals in this space."
+            ),
+            None => format!("Every root of the determinants is rational: no other value of `{t}` has more integrals in this space."),
+        },
     }));
     if facts {
         let value = |k: usize, v: &trigpoly::Rational, r: &brackets::search::SearchResult| {
@@ -140,7 +170,14 @@ pub fn exceptional_values_report(
                     .map(|(p, real)| (p.render(Style::Ascii), real)),
                 found.largest_minor,
                 found.zero_left_out,
-            ),
+            )
+            .with_ruled_out(ruled_out_real.map(|real| RuledOutFacts {
+                polynomial:
+                    (found.ruled_out_in(vars)).map_or(String::new(), |p| p.render(Style::Ascii)),
+                roots: ruled_out.count(),
+                real_roots: real,
+                prime: ruled_out.prime,
+            })),
         )));
     }
     let first = searches

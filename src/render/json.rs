@@ -129,8 +129,15 @@
 //!                   with the section of the search there), "not_exceptional": [values] (the
 //!                   rational roots of the determinants where the search found no more),
 //!                   "unexamined": ascii | null (the polynomial in the parameter whose
-//!                   irrational and complex roots were not examined),
+//!                   roots, irrational and complex, were not ruled out: every minor tried
+//!                   of some block vanishes there; not examined),
 //!                   "unexamined_real_roots": int | null (how many of its roots are real),
+//!                   "ruled_out": ascii | null (the polynomial whose roots, irrational and
+//!                   complex, hold no more integrals: every block keeps its generic rank
+//!                   there), "ruled_out_roots": int (its degree, 0 when null),
+//!                   "ruled_out_real_roots": int (how many of them are real),
+//!                   "ruled_out_prime": int | null (the prime modulo which the minors were
+//!                   taken, null when no root was examined),
 //!                   "largest_minor": { "size", "degree" }, "zero_left_out": bool (0, a root,
 //!                   left out: H has a negative power of the parameter and no value there) } ]
 //!                   (only for `search --find-values`)
@@ -626,6 +633,10 @@ fn exceptional_values(f: &ExceptionalFacts, section: u32) -> Value {
         "not_exceptional": f.not_exceptional,
         "unexamined": f.unexamined,
         "unexamined_real_roots": f.unexamined_real_roots,
+        "ruled_out": f.ruled_out.as_ref().map(|r| &r.polynomial),
+        "ruled_out_roots": f.ruled_out.as_ref().map_or(0, |r| r.roots),
+        "ruled_out_real_roots": f.ruled_out.as_ref().map_or(0, |r| r.real_roots),
+        "ruled_out_prime": f.ruled_out.as_ref().and_then(|r| r.prime),
         "largest_minor": { "size": f.largest_minor.0, "degree": f.largest_minor.1 },
         "zero_left_out": f.zero_left_out,
     })

@@ -27,11 +27,56 @@ use trigpoly::num_rational::BigRational;
 use trigpoly::Rational;
 
 use crate::error::EngineError;
+use crate::modular::{big_mod, inverse_mod, mul_mod};
 
 /// A polynomial `Σ a_i t^i` with integer coefficients, lowest degree first, with no zero
 /// leading coefficient (the zero polynomial has none).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct IntPoly(Vec<BigInt>);
+
+/// The monic gcd of two polynomials over `F_p` (coefficients lowest degree first, no zero
+/// leading one; the zero polynomial empty), by Euclid's algorithm: the gcd with zero is the
+/// other made monic, of two zeros zero.
+pub(crate) fn gcd_mod(a: &[u64], b: &[u64], p: u64) -> Vec<u64> {
+    let (mut a, mut b) = (a.to_vec(), b.to_vec());
+    trim(&mut a);
+    trim(&mut b);
+    while !b.is_empty() {
+        let r = remainder_mod(a, &b, p);
+        a = b;
+        b = r;
+    }
+    if let Some(&lead) = a.last() {
+        let inverse = inverse_mod(lead, p);
+        for c in &mut a {
+            *c = mul_mod(*c, inverse, p);
+        }
+    }
+    a
+}
+
+/// The remainder of `a` on division by `d` (not zero) over `F_p`.
+fn remainder_mod(mut a: Vec<u64>, d: &[u64], p: u64) -> Vec<u64> {
+    let dd = d.len() - 1;
+    let inverse = inverse_mod(d[dd], p);
+    while a.len() > dd {
+        let lead = a.pop().expect("longer than d");
+        let factor = mul_mod(lead, inverse, p);
+        let shift = a.len() - dd;
+        for (x, y) in a[shift..].iter_mut().zip(&d[..dd]) {
+            *x = (*x + p - mul_mod(factor, *y, p)) % p;
+        }
+        trim(&mut a);
+    }
+    a
+}
+
+/// Drops the zero leading coefficients.
+fn trim(a: &mut Vec<u64>) {
+    while a.last() == Some(&0) {
+        a.pop();
+    }
+}
 
 /// How many bisection steps narrowing one root may take: a leading coefficient of some
 /// 300 000 bits. Past it the search for rational roots stops with a message.
@@ -140,8 +185,11 @@ impl IntPoly {
         !self.is_zero() && other.pseudo_divide(self).1.is_zero()
     }
 
-    /// The primitive gcd (primitive remainder sequence).
-    fn gcd(&self, other: &IntPoly) -> IntPoly {
+    /// The primitive gcd, their gcd over the rationals made primitive with a positive leading
+    /// coefficient (primitive remainder sequence); the gcd with zero is the other made
+    /// primitive.
+    #[must_use]
+    pub fn gcd(&self, other: &IntPoly) -> IntPoly {
         let (mut a, mut b) = (self.primitive(), other.primitive());
         while !b.is_zero() {
             let r = a.pseudo_divide(&b).1;
@@ -159,8 +207,9 @@ impl IntPoly {
         self.mul(&other.divide_out(&g)).primitive()
     }
 
-    /// The exact quotient by `d`, a divisor up to a constant, made primitive.
-    fn divide_out(&self, d: &IntPoly) -> IntPoly {
+    /// The exact quotient by `d`, a divisor over the rationals, made primitive.
+    #[must_use]
+    pub fn divide_out(&self, d: &IntPoly) -> IntPoly {
         self.pseudo_divide(d).0.primitive()
     }
 
@@ -187,6 +236,13 @@ impl IntPoly {
             num_bigint::Sign::NoSign => 0,
             num_bigint::Sign::Plus => 1,
         }
+    }
+
+    /// The coefficients modulo the prime `p`, lowest degree first, without zero leading ones.
+    pub(crate) fn reduced_mod(&self, p: u64) -> Vec<u64> {
+        let mut out: Vec<u64> = self.0.iter().map(|c| big_mod(c, p)).collect();
+        trim(&mut out);
+        out
     }
 
     /// Whether `r` is a root.
@@ -462,6 +518,42 @@ mod tests {
         assert_eq!(f.lcm(&g), expected);
         assert_eq!(f.lcm(&f), f);
         assert_eq!(IntPoly::from_i64(&[1]).lcm(&g), g);
+    }
+
+    #[test]
+    fn the_gcd_over_the_integers_is_the_shared_factor_made_primitive() {
+        // (2t² − 6)(t + 1) and (t² − 3)(3t − 1)·(−5): t² − 3.
+        let f = IntPoly::from_i64(&[-6, 0, 2]).mul(&IntPoly::from_i64(&[1, 1]));
+        let g = IntPoly::from_i64(&[-3, 0, 1]).mul(&IntPoly::from_i64(&[5, -15]));
+        assert_eq!(f.gcd(&g), IntPoly::from_i64(&[-3, 0, 1]));
+        // Coprime: a constant; with zero: the other, primitive.
+        let h = IntPoly::from_i64(&[1, 0, 1]);
+        assert_eq!(f.gcd(&h), IntPoly::from_i64(&[1]));
+        assert_eq!(IntPoly::new(Vec::new()).gcd(&f), f.primitive());
+        assert_eq!(f.divide_out(&f.gcd(&g)), IntPoly::from_i64(&[1, 1]));
+    }
+
+    #[test]
+    fn the_gcd_modulo_a_prime_is_monic_and_sees_factors_the_integers_do_not_share() {
+        let p = 7;
+        // (t − 1)(t + 2) and (t − 1)(t − 3) modulo 7: t − 1 = [6, 1].
+        let f = IntPoly::from_i64(&[-2, 1, 1]).reduced_mod(p);
+        let g = IntPoly::from_i64(&[3, -4, 1]).reduced_mod(p);
+        assert_eq!(gcd_mod(&f, &g, p), [6, 1]);
+        // t² + 1 and t − 9 share no factor over Q, but 9 ≡ 2 and 2² + 1 = 5 ≢ 0, while
+        // t² + 1 and t − 3 share t − 3 modulo 5 (3² + 1 = 10).
+        let square_plus_one = IntPoly::from_i64(&[1, 0, 1]);
+        assert_eq!(gcd_mod(&square_plus_one.reduced_mod(p), &[5, 1], p), [1]);
+        let five = 5;
+        assert_eq!(
+            gcd_mod(&square_plus_one.reduced_mod(five), &[2, 1], five),
+            [2, 1]
+        );
+        // Twice t − 1 is made monic; the gcd with zero is the other, of zeros zero.
+        assert_eq!(gcd_mod(&[5, 2], &[], p), [6, 1]);
+        assert!(gcd_mod(&[], &[], p).is_empty());
+        // A leading coefficient that vanishes modulo p drops the degree.
+        assert_eq!(IntPoly::from_i64(&[1, 2, 14]).reduced_mod(p), [1, 2]);
     }
 
     #[test]

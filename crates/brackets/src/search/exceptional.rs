@@ -13,9 +13,27 @@
 //! rows' sums of coefficients), each time from its values at `deg + 1` points, then by the Chinese
 //! remainder theorem. Every exceptional value is a root of `det S` of some block. Its rational
 //! roots are found exactly ([`IntPoly::rational_roots`]), and each is kept only if the ordinary
-//! search at that value finds more integrals than at a generic value (one that is no root); the
-//! irrational and complex roots are not examined, and the factor holding them is reported
-//! ([`ExceptionalValues::unexamined`]).
+//! search at that value finds more integrals than at a generic value (one that is no root).
+//!
+//! The other roots, those of `g`, the lcm of the determinants' square-free parts with their
+//! rational factors divided out, are ruled out where they can be ([`RuledOut`]), exactly. Take
+//! a prime `p` not dividing `g`'s leading coefficient, and for each block `b`, of generic rank
+//! `r_b`, the gcd over `F_p` of `g mod p` with `det S_b mod p` and with `d_b = det(U M_b V) mod
+//! p` for a few random small-integer `U` (`r_b × rows`) and `V` (`columns × r_b`), each from
+//! its values at `deg + 1` points (`deg` bounded by the sum of the rows' degrees of `U M_b V`).
+//! Where that gcd is `1`, at every root `ᾱ ∈ F̄_p` of `g mod p` some `r_b × r_b` minor of
+//! `M_b(ᾱ)` is nonzero (`det(U M V)` is, by Cauchy–Binet, a combination of them). Every root
+//! `α ∈ Q̄` of `g` is integral at every prime `𝔭 | p` of `Q(α)` (`p` does not divide the
+//! leading coefficient) and reduces modulo `𝔭` to such an `ᾱ`; the same minor at `α`, reduced,
+//! is that nonzero one, so it is nonzero: block `b` has rank `r_b` at every root of `g`. When
+//! every block passes, no root of `g` holds more integrals: a proof, whatever `U` and `V` were.
+//! A block whose gcd stays nontrivial (the roots where it truly loses rank always do) has its
+//! factor named over Q: the gcd over Q of `g`, `det S_b` and the exact determinants (computed
+//! as `det S_b` is) of the combinations tried, until it is no larger than modulo `p`. Outside
+//! it the block keeps its rank, since one of those minors is nonzero there; at its roots every
+//! minor tried vanishes, evidence of a lost rank but no proof. The lcm of these over the
+//! blocks is reported as not examined ([`ExceptionalValues::unexamined`]), `g` divided by it
+//! as ruled out ([`ExceptionalValues::ruled_out`]).
 //!
 //! The work is split in two: [`exceptional_candidates`] finds the roots and a generic value
 //! ([`Candidates`]), and [`Candidates::confirm`] searches at each with a search it is given
@@ -68,7 +86,7 @@ use trigpoly::{Expr, Rational, Var, VarKind, Vars};
 use crate::error::{EngineError, EngineLimit};
 use crate::modular::{big_mod, inverse_mod, mul_mod, previous_prime, PRIME};
 use crate::system::System;
-use crate::univariate::IntPoly;
+use crate::univariate::{gcd_mod, IntPoly};
 
 use super::problem::{blocks, canonical, Problem};
 use super::{
@@ -90,10 +108,14 @@ pub struct ExceptionalValues {
     pub values: Vec<ExceptionalValue>,
     /// The rational roots of the determinants where the search found no more integrals.
     pub spurious: Vec<Rational>,
-    /// The lcm of the determinants' square-free parts with their rational linear factors
-    /// divided out, a constant when none is left: its roots, not rational, were not examined
+    /// The factor of the determinants' irrational part whose roots were not ruled out, a
+    /// constant when none is left: at each of its roots every minor tried vanishes, so that
+    /// they may hold more integrals, not examined since they are not rational
     /// ([`ExceptionalValues::unexamined_in`] writes it in the parameter).
     pub unexamined: IntPoly,
+    /// The factor of the determinants' irrational part whose roots were ruled out: at each,
+    /// every block keeps its generic rank, so that none holds more integrals in this space.
+    pub ruled_out: RuledOut,
     /// The largest block's minor: its size and the degree of its determinant.
     pub largest_minor: (usize, usize),
     /// Whether `0` was a root of a determinant left out as no candidate: `H` holds a negative
@@ -107,6 +129,42 @@ impl ExceptionalValues {
     pub fn unexamined_in(&self, vars: &Vars) -> Option<Expr> {
         (self.unexamined.degree().unwrap_or(0) > 0)
             .then(|| polynomial_in(vars, self.parameter, &self.unexamined))
+    }
+
+    /// [`RuledOut::factor`] as a polynomial in the parameter, in `vars` (the system's), when
+    /// any root was ruled out.
+    pub fn ruled_out_in(&self, vars: &Vars) -> Option<Expr> {
+        (self.ruled_out.count() > 0)
+            .then(|| polynomial_in(vars, self.parameter, &self.ruled_out.factor))
+    }
+}
+
+/// The irrational and complex roots of the determinants shown to hold no more integrals
+/// (the module docs give the proof).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct RuledOut {
+    /// The factor whose roots were ruled out (primitive), a constant when none was: the
+    /// determinants' irrational part is its product with [`ExceptionalValues::unexamined`].
+    pub factor: IntPoly,
+    /// The prime modulo which the minors were taken, when any root was examined: where a
+    /// block's minors leave no common root with the irrational part modulo it, that block
+    /// keeps its rank at every one of its roots; a block where they leave some had its
+    /// minors' determinants computed exactly and their gcd with it taken over Q.
+    pub prime: Option<u64>,
+}
+
+impl RuledOut {
+    /// Nothing ruled out, nothing examined.
+    fn none() -> Self {
+        RuledOut {
+            factor: IntPoly::from_i64(&[1]),
+            prime: None,
+        }
+    }
+
+    /// How many roots were ruled out (the factor's degree).
+    pub fn count(&self) -> usize {
+        self.factor.degree().unwrap_or(0)
     }
 }
 
@@ -133,6 +191,8 @@ pub struct Candidates {
     pub roots: Vec<Rational>,
     /// As [`ExceptionalValues::unexamined`].
     pub unexamined: IntPoly,
+    /// As [`ExceptionalValues::ruled_out`].
+    pub ruled_out: RuledOut,
     /// As [`ExceptionalValues::largest_minor`].
     pub largest_minor: (usize, usize),
     /// As [`ExceptionalValues::zero_left_out`].
@@ -195,6 +255,7 @@ impl Candidates {
             values,
             spurious,
             unexamined: self.unexamined,
+            ruled_out: self.ruled_out,
             largest_minor: self.largest_minor,
             zero_left_out: self.zero_left_out,
         })
@@ -247,6 +308,7 @@ pub fn exceptional_candidates(
     };
     let matrix = PolyMatrix::new(&images, parameter, &problem.variables.angles);
     let mut determinants = Vec::new();
+    let mut ranked_blocks = Vec::new();
     let mut largest_minor = (0, 0);
     for block in blocks(&matrix.columns, matrix.rows) {
         let minor = matrix.generic_minor(&block);
@@ -265,6 +327,7 @@ pub fn exceptional_candidates(
         }
         let det = determinant(&minor);
         largest_minor = largest_minor.max((minor.len(), det.degree().unwrap_or(0)));
+        ranked_blocks.push((block, minor.len()));
         determinants.push(det);
     }
     let mut roots: Vec<Rational> = Vec::new();
@@ -291,11 +354,23 @@ pub fn exceptional_candidates(
         .map(|k| Rational::new(2 * k + 5, 1))
         .find(|v| determinants.iter().all(|d| !d.vanishes_at(v)))
         .expect("a polynomial has finitely many roots");
+    let blocks: Vec<RankedBlock> = (ranked_blocks.into_iter().zip(&determinants))
+        .map(|((columns, rank), determinant)| RankedBlock {
+            columns,
+            rank,
+            determinant,
+        })
+        .collect();
+    let (unexamined, ruled_out) = match rest.degree() {
+        Some(d) if d > 0 => matrix.rule_out(&blocks, &rest),
+        _ => (rest, RuledOut::none()),
+    };
     Ok(Candidates {
         parameter,
         generic_value,
         roots,
-        unexamined: rest,
+        unexamined,
+        ruled_out,
         largest_minor,
         zero_left_out,
     })
@@ -484,13 +559,7 @@ impl PolyMatrix {
         let point = RANDOM_POINT % p;
         // The block's rows, increasing, and each one's place among them: `dense[local[r]]` is
         // row `rows[local[r]] = r`, by construction.
-        let mut rows: Vec<usize> = (block.iter())
-            .flat_map(|&j| self.columns[j].iter().map(|(row, _)| *row))
-            .collect();
-        rows.sort_unstable();
-        rows.dedup();
-        let local: FxHashMap<usize, usize> =
-            rows.iter().enumerate().map(|(i, &r)| (r, i)).collect();
+        let (rows, local) = self.block_rows(block);
         let mut dense = vec![vec![0_u64; block.len()]; rows.len()];
         for (k, &j) in block.iter().enumerate() {
             for (row, poly) in &self.columns[j] {
@@ -533,6 +602,204 @@ impl PolyMatrix {
     }
 }
 
+/// A block of the equations: its columns, its generic rank and the determinant of its
+/// generic minor.
+struct RankedBlock<'a> {
+    columns: Vec<usize>,
+    rank: usize,
+    determinant: &'a IntPoly,
+}
+
+/// How many random combinations `U M V` of a block are tried modulo the prime before the
+/// roots they leave are named over Q.
+const MIXED_TRIES: usize = 3;
+
+/// The bound on the small integers of the random combinations `U M V`.
+const MIXING_BOUND: u64 = 9;
+
+impl PolyMatrix {
+    /// The roots of `g` (square-free, not constant) where every block keeps its generic rank,
+    /// found as the module docs say: the factor of `g` left (whose roots are roots of every
+    /// minor tried) and what was ruled out.
+    fn rule_out(&self, blocks: &[RankedBlock], g: &IntPoly) -> (IntPoly, RuledOut) {
+        let lead = g.coeffs().last().expect("g is not zero");
+        let mut p = PRIME;
+        while big_mod(lead, p) == 0 {
+            p = previous_prime(p);
+        }
+        let g_mod = g.reduced_mod(p);
+        let mut seed = RANDOM_POINT;
+        let mut left = IntPoly::from_i64(&[1]);
+        for block in blocks {
+            // Modulo p: the roots of g where the minor and each combination tried vanish.
+            let mut common = gcd_mod(&g_mod, &block.determinant.reduced_mod(p), p);
+            let mut tried = Vec::new();
+            while common.len() > 1 && tried.len() < MIXED_TRIES {
+                let entries = self.block_entries(&block.columns);
+                let mixed = Mixing::new(&entries, block.rank, &mut seed);
+                let reduced: Vec<(usize, usize, Vec<u64>)> = (entries.iter())
+                    .map(|(i, k, e)| (*i, *k, e.iter().map(|c| big_mod(c, p)).collect()))
+                    .collect();
+                let small = |c: i64| c.rem_euclid(p as i64) as u64;
+                let combination = mixed.apply(
+                    &reduced,
+                    |x, c| mul_mod(*x, small(c), p),
+                    |a, b| (a + b) % p,
+                );
+                common = gcd_mod(&common, &determinant_poly_mod(&combination, p), p);
+                tried.push((entries, mixed));
+            }
+            if common.len() <= 1 {
+                continue;
+            }
+            // Left modulo p: named over Q, the gcd with the exact determinants, from the
+            // minor's and those of the combinations tried until it is no larger.
+            let mut named = g.gcd(block.determinant);
+            for (entries, mixed) in &tried {
+                if named.degree() <= Some(common.len() - 1) {
+                    break;
+                }
+                let combination =
+                    mixed.apply(entries, |x: &BigInt, c| x * BigInt::from(c), |a, b| a + b);
+                named = named.gcd(&determinant(&combination));
+            }
+            if !named.divides(&left) {
+                left = left.lcm(&named);
+            }
+        }
+        let factor = g.divide_out(&left);
+        (
+            left,
+            RuledOut {
+                factor,
+                prime: Some(p),
+            },
+        )
+    }
+
+    /// The block's nonzero entries: the row's place among the block's rows, the column's
+    /// among its columns, the polynomial.
+    fn block_entries(&self, block: &[usize]) -> Vec<(usize, usize, Vec<BigInt>)> {
+        let (_, local) = self.block_rows(block);
+        (block.iter().enumerate())
+            .flat_map(|(k, &j)| (self.columns[j].iter()).map(move |(row, poly)| (row, k, poly)))
+            .map(|(row, k, poly)| (local[row], k, poly.clone()))
+            .collect()
+    }
+
+    /// The block's rows, increasing, and each one's place among them.
+    fn block_rows(&self, block: &[usize]) -> (Vec<usize>, FxHashMap<usize, usize>) {
+        let mut rows: Vec<usize> = (block.iter())
+            .flat_map(|&j| self.columns[j].iter().map(|(row, _)| *row))
+            .collect();
+        rows.sort_unstable();
+        rows.dedup();
+        let local = rows.iter().enumerate().map(|(i, &r)| (r, i)).collect();
+        (rows, local)
+    }
+}
+
+/// Random small integers `U` (`rank × rows`) and `V` (`columns × rank`) combining a block's
+/// matrix `M` into the square `U M V`, of the block's generic rank.
+struct Mixing {
+    u: Vec<Vec<i64>>,
+    v: Vec<Vec<i64>>,
+}
+
+impl Mixing {
+    /// Fresh `U` and `V` for the block of `entries`, drawn from `seed` (advanced).
+    fn new(entries: &[(usize, usize, Vec<BigInt>)], rank: usize, seed: &mut u64) -> Self {
+        let rows = entries.iter().map(|e| e.0 + 1).max().unwrap_or(0);
+        let columns = entries.iter().map(|e| e.1 + 1).max().unwrap_or(0);
+        let mut draw = |n: usize| -> Vec<i64> {
+            (0..n)
+                .map(|_| {
+                    *seed = seed.wrapping_add(RANDOM_POINT);
+                    let mut z = *seed;
+                    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+                    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+                    z ^= z >> 31;
+                    (z % (2 * MIXING_BOUND + 1)) as i64 - MIXING_BOUND as i64
+                })
+                .collect()
+        };
+        let u = (0..rank).map(|_| draw(rows)).collect();
+        let v = (0..columns).map(|_| draw(rank)).collect();
+        Mixing { u, v }
+    }
+
+    /// `U M V`, its entries polynomials (lowest degree first) over the ring of `scale`
+    /// (an entry's coefficient times a small integer) and `add`.
+    fn apply<T: Clone + Default>(
+        &self,
+        entries: &[(usize, usize, Vec<T>)],
+        scale: impl Fn(&T, i64) -> T,
+        add: impl Fn(T, T) -> T,
+    ) -> Vec<Vec<Vec<T>>> {
+        let rank = self.u.len();
+        let rows = self.u.first().map_or(0, Vec::len);
+        let accumulate = |into: &mut Vec<T>, poly: &[T], c: i64| {
+            if c == 0 {
+                return;
+            }
+            if into.len() < poly.len() {
+                into.resize(poly.len(), T::default());
+            }
+            for (x, y) in into.iter_mut().zip(poly) {
+                *x = add(std::mem::take(x), scale(y, c));
+            }
+        };
+        // M V, then U (M V).
+        let mut mv: Vec<Vec<Vec<T>>> = vec![vec![Vec::new(); rank]; rows];
+        for (i, k, poly) in entries {
+            for (c, &x) in self.v[*k].iter().enumerate() {
+                accumulate(&mut mv[*i][c], poly, x);
+            }
+        }
+        (self.u.iter())
+            .map(|u_row| {
+                (0..rank)
+                    .map(|c| {
+                        let mut entry = Vec::new();
+                        for (i, &x) in u_row.iter().enumerate() {
+                            accumulate(&mut entry, &mv[i][c], x);
+                        }
+                        entry
+                    })
+                    .collect()
+            })
+            .collect()
+    }
+}
+
+/// The determinant modulo `p` of the square matrix of polynomials over `F_p`, from its
+/// values at `deg + 1` points, `deg` the sum of the rows' degrees.
+fn determinant_poly_mod(minor: &[Vec<Vec<u64>>], p: u64) -> Vec<u64> {
+    let degree: usize = (minor.iter())
+        .map(|row| {
+            row.iter()
+                .map(|e| e.len().saturating_sub(1))
+                .max()
+                .unwrap_or(0)
+        })
+        .sum();
+    let values: Vec<u64> = (0..=degree as u64)
+        .map(|u| {
+            let at = entries_at(minor, |e| {
+                e.iter()
+                    .rev()
+                    .fold(0, |acc, &c| (mul_mod(acc, u, p) + c) % p)
+            });
+            determinant_mod(at, p)
+        })
+        .collect();
+    let mut coeffs = interpolate_mod(&values, p);
+    while coeffs.last() == Some(&0) {
+        coeffs.pop();
+    }
+    coeffs
+}
+
 /// A fixed point in `F_p` standing for a random one (the golden ratio's 64 bits).
 const RANDOM_POINT: u64 = 0x9E37_79B9_7F4A_7C15;
 
@@ -568,7 +835,7 @@ fn determinant(minor: &[Vec<Vec<BigInt>>]) -> IntPoly {
     let mut p = PRIME;
     while modulus <= needed {
         let values: Vec<u64> = (0..=degree as u64)
-            .map(|u| determinant_mod(minor, u, p))
+            .map(|u| determinant_mod(entries_at(minor, |e| evaluate_mod(e, u, p)), p))
             .collect();
         let residues = interpolate_mod(&values, p);
         // x ≡ coeffs mod modulus, x ≡ residue mod p.
@@ -591,13 +858,16 @@ fn determinant(minor: &[Vec<Vec<BigInt>>]) -> IntPoly {
     IntPoly::new(coeffs)
 }
 
-/// The determinant of the matrix at `t = u`, modulo `p`.
-fn determinant_mod(minor: &[Vec<Vec<BigInt>>], u: u64, p: u64) -> u64 {
-    let r = minor.len();
-    let mut a: Vec<Vec<u64>> = minor
-        .iter()
-        .map(|row| row.iter().map(|e| evaluate_mod(e, u, p)).collect())
-        .collect();
+/// The matrix of `value(entry)` for each entry.
+fn entries_at<T>(minor: &[Vec<Vec<T>>], value: impl Fn(&[T]) -> u64) -> Vec<Vec<u64>> {
+    (minor.iter())
+        .map(|row| row.iter().map(|e| value(e)).collect())
+        .collect()
+}
+
+/// The determinant of the square matrix `a` modulo `p`.
+fn determinant_mod(mut a: Vec<Vec<u64>>, p: u64) -> u64 {
+    let r = a.len();
     let mut det = 1_u64;
     for col in 0..r {
         let Some(found) = (col..r).find(|&i| a[i][col] != 0) else {
@@ -688,6 +958,17 @@ mod tests {
                 .momenta_degree(momenta)
                 .positions_degree(positions),
         )
+    }
+
+    #[test]
+    fn the_quartic_potentials_at_b_8_have_every_irrational_root_ruled_out() {
+        // x⁴ + a x²y² + 8y⁴, quadratic in the momenta, positions degree 5: the rational values
+        // found, and no irrational root of the determinants left.
+        let system = planar("(p_x^2 + p_y^2)/2 + x^4 + a*x^2*y^2 + 8*y^4", &["a"]);
+        let found = exceptional_values(&system, &space(2, 5), system.var("a")).unwrap();
+        assert_eq!(found.unexamined.degree(), Some(0));
+        assert_eq!(found.ruled_out.count(), 4, "{:?}", found.ruled_out);
+        assert_eq!(values_of(&found), ["0"]);
     }
 
     #[test]
@@ -810,10 +1091,17 @@ mod tests {
 
     #[test]
     fn irrational_exceptional_values_are_reported_not_claimed() {
-        // Isotropic where a² − 1 = 1, at a = ±√2: no rational value, a² − 2 left unexamined.
+        // Isotropic where a² − 1 = 1, at a = ±√2: no rational value, a² − 2 left unexamined,
+        // every minor vanishing there; the determinants' other irrational roots, a² = 3, 5
+        // and 3/2 (frequency ratios √2, 2 and √(1/2), no quadratic integral more), ruled out.
         let system = planar("(p_x^2 + p_y^2)/2 + (x^2 + (a^2 - 1)*y^2)/2", &["a"]);
         let found = exceptional_values(&system, &space(2, 2), system.var("a")).unwrap();
-        assert!(IntPoly::from_i64(&[-2, 0, 1]).divides(&found.unexamined));
+        assert_eq!(found.unexamined, IntPoly::from_i64(&[-2, 0, 1]));
+        for ruled_out in [[-3, 0, 1], [-5, 0, 1], [-3, 0, 2]] {
+            assert!(IntPoly::from_i64(&ruled_out).divides(&found.ruled_out.factor));
+        }
+        assert_eq!(found.ruled_out.count(), 6);
+        assert!(found.ruled_out.prime.is_some());
         // Written in a: the same polynomial, its value at a = 3 the IntPoly's.
         let written = found.unexamined_in(system.vars()).unwrap();
         let three = Expr::constant(system.vars(), 3.into());

@@ -108,6 +108,7 @@ mod tests;
 
 pub use exceptional::{
     exceptional_candidates, exceptional_values, Candidates, ExceptionalValue, ExceptionalValues,
+    RuledOut,
 };
 pub use level_set::{BesideLevelSet, LevelProof, LevelReduction, LevelSet};
 pub use options::{SearchOptions, SearchSpace, DEFAULT_MAX_MINOR, DEFAULT_MAX_PRODUCTS};
