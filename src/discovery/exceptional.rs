@@ -114,12 +114,14 @@ pub fn exceptional_values_report(
     let prime = ruled_out
         .prime
         .map_or(String::new(), |p| format!(" p = {p}"));
-    // The roots ruled out, as a clause: "58 roots (not rational; 50 real)".
+    // The roots ruled out, as a clause: "58 roots (not rational; 50 real)", "2 roots
+    // (complex, none real)".
     let ruled_out_roots = ruled_out_real.map(|real| {
-        format!(
-            "{} (not rational; {real} real)",
-            counted(ruled_out.count(), "root")
-        )
+        let roots = counted(ruled_out.count(), "root");
+        match real {
+            0 => format!("{roots} (complex, none real)"),
+            real => format!("{roots} (not rational; {real} real)"),
+        }
     });
     entries.push(Entry::Text(match (&unexamined, real_roots) {
         (Some(p), Some(real)) => {

@@ -1432,8 +1432,8 @@ fn henon_heiles_values_of_c_with_a_second_quadratic_integral_found_from_h_alone(
 
 /// The values of `C` with an integral quartic in the momenta at `A = 1, B = 16`, from `H`
 /// alone (results.md §7): the quartic case `C = 16/3` (the file's `Q`), and `C = 2`, whose
-/// quadratic integral is there at every `B`; the quadratic `21C² − 12C + 272` left, with no
-/// real root.
+/// quadratic integral is there at every `B`; the complex roots of `21C² − 12C + 272` ruled
+/// out.
 #[test]
 fn henon_heiles_values_of_c_with_a_quartic_integral_at_b_sixteen_found_from_h_alone() {
     expect_alone(
@@ -1442,9 +1442,10 @@ fn henon_heiles_values_of_c_with_a_quartic_integral_at_b_sixteen_found_from_h_al
             "For a generic C (searched at C = 7, no root): 3 integrals (section 2).",
             "More integrals at C = 2, 4 integrals (section 4) and at C = 16/3, 4 integrals \
              (section 6).",
-            "The determinants' other roots, those of 21C² − 12C + 272 (degree 2), are none of \
-             them real: no other real value of C has more integrals in this space (the complex \
-             ones were not examined).",
+            "The determinants' other 2 roots (complex, none real) hold no more integrals in \
+             this space: at each, every block of the equations keeps its generic rank (shown \
+             modulo the prime p = 4611686018427387847). No value of C but those above has more integrals in \
+             this space.",
             "I3 = 18 p_x² p_y² + 9 p_y⁴ + 12x³ p_x p_y + 36x²y p_y² + 18x² p_y²",
             "11 claims: 11 proved, 0 refuted",
         ],
@@ -1502,7 +1503,8 @@ fn quartic_potentials_parabolic_case_a_twelve_b_sixteen_is_quadratic_found_from_
 }
 
 /// Quartic in the momenta, at `b = 8`: `a = 6` (the file's `Q`) and the separable `a = 0`;
-/// at `a = 6`, the values `b = 1` and `b = 8`; the irrational roots are told, not examined.
+/// at `a = 6`, the values `b = 1` and `b = 8`; every irrational root ruled out: no other
+/// value, rational or not, has more integrals in this space.
 #[test]
 fn quartic_potentials_quartic_case_a_six_b_eight_found_from_h() {
     expect_alone(
@@ -1511,8 +1513,9 @@ fn quartic_potentials_quartic_case_a_six_b_eight_found_from_h() {
             "For a generic a (searched at a = 7, no root): 3 integrals (section 2).",
             "More integrals at a = 0, 6 integrals (section 4) and at a = 6, 4 integrals \
              (section 6).",
-            "(degree 58; --full-expressions shows it whole), which are not rational (50 of them \
-             real): not examined.",
+            "The determinants' other 58 roots (not rational; 50 real) hold no more integrals \
+             in this space: at each, every block of the equations keeps its generic rank",
+            "No value of a but those above has more integrals in this space.",
             "I3 = 2 p_x² p_y² + p_y⁴ + 16x³y p_x p_y + 24x²y² p_y² + 32y⁴ p_x² + 32y⁴ p_y² \
              + 32x⁶y²",
             "13 claims: 13 proved, 0 refuted",
@@ -1525,6 +1528,8 @@ fn quartic_potentials_quartic_case_a_six_b_eight_found_from_h() {
             "For a generic b (searched at b = 7, no root): 3 integrals (section 2).",
             "More integrals at b = 1, 6 integrals (section 4) and at b = 8, 4 integrals \
              (section 6).",
+            "The determinants' other 28 roots (not rational; 22 real) hold no more integrals \
+             in this space",
             "13 claims: 13 proved, 0 refuted",
         ],
     );
@@ -1539,8 +1544,8 @@ fn quartic_potentials_a_minus_six_has_no_second_integral() {
         &[
             "More integrals at a = 0, 6 integrals (section 4), at a = 2, 9 integrals (section 6) \
              and at a = 6, 6 integrals (section 8).",
-            "(degree 52; --full-expressions shows it whole), which are not rational (46 of them \
-             real): not examined.",
+            "The determinants' other 52 roots (not rational; 46 real) hold no more integrals \
+             in this space",
         ],
     );
     assert!(

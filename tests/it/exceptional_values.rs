@@ -188,6 +188,48 @@ fn the_json_counts_the_real_roots_of_the_unexamined_polynomial() {
     assert!(rational["exceptional_values"][0]["unexamined_real_roots"].is_null());
 }
 
+/// A long polynomial whose roots were not ruled out (the oscillator isotropic at `a² = 2`, at
+/// degree 5, where `a² − 1` is the square of many frequency ratios: degree 22, coefficients of
+/// up to 12 digits) is shown by its first terms with its degree and the flag that shows it
+/// whole, in text, Markdown and LaTeX; with --full-expressions, and in JSON, whole.
+#[test]
+fn a_long_unexamined_polynomial_is_shown_in_part_with_its_degree() {
+    let file = oscillator("resonant.toml", "(x^2 + (a^2 - 1)*y^2)/2");
+    let degree_five = [
+        "search",
+        file.to_str().unwrap(),
+        "--find-values",
+        "a",
+        "--momenta-degree",
+        "5",
+        "--positions-degree",
+        "5",
+    ];
+    let at = |extra: &[&str]| normalize(&superint_ok(&[&degree_five[..], extra].concat()));
+    let whole = at(&["--full-expressions"]);
+    let json = superint_json(&degree_five);
+    let ascii = json["exceptional_values"][0]["unexamined"]
+        .as_str()
+        .expect("the polynomial")
+        .to_string();
+    // Whole: each of its 12 terms, down to the constant the JSON ends with.
+    let last = ascii.rsplit(' ').next().unwrap();
+    assert!(ascii.contains("a^22"), "{ascii}");
+    assert!(whole.contains(&format!("{last} (degree 22)")), "{whole}");
+    for format in ["text", "markdown", "latex"] {
+        let part = at(&["--format", format]);
+        // LaTeX writes the size as text in math and -- as -{}-.
+        let size = match format {
+            "latex" => "\\dots (a\\ \\text{polynomial of}\\ 12\\ \\text{terms})",
+            _ => "+ … (a polynomial of 12 terms)",
+        };
+        for piece in [size, "(degree 22; -", "full-expressions shows it whole)"] {
+            assert!(part.contains(piece), "{format}: {piece}: {part}");
+        }
+        assert!(!part.contains(last), "{format}: {part}");
+    }
+}
+
 /// The anisotropic oscillator `(x² + a y²)/2` at degree 6: its resonances are at rational `a`
 /// (squares of frequency ratios), and each of the determinants' 34 other roots, not rational,
 /// is ruled out (every block keeps its rank there), in text, Markdown and LaTeX; JSON has no

@@ -29,7 +29,10 @@
 //! every block passes, no root of `g` holds more integrals: a proof, whatever `U` and `V` were.
 //! A block whose gcd stays nontrivial (the roots where it truly loses rank always do) has its
 //! factor named over Q: the gcd over Q of `g`, `det S_b` and the exact determinants (computed
-//! as `det S_b` is) of the combinations tried, until it is no larger than modulo `p`. Outside
+//! as `det S_b` is) of the combinations tried, until it is no larger than modulo `p` (unless
+//! `g` is square-free modulo `p` and the gcd there divides the factor named for an earlier
+//! block: a factor of `g` prime to that one then reduces to one prime to the gcd, and the
+//! argument above rules out its roots for this block). Outside
 //! it the block keeps its rank, since one of those minors is nonzero there; at its roots every
 //! minor tried vanishes, evidence of a lost rank but no proof. The lcm of these over the
 //! blocks is reported as not examined ([`ExceptionalValues::unexamined`]), `g` divided by it
@@ -628,6 +631,11 @@ impl PolyMatrix {
             p = previous_prime(p);
         }
         let g_mod = g.reduced_mod(p);
+        // Square-free modulo p, g's factors over Q reduce to factors prime to each other.
+        let derivative: Vec<u64> = (g_mod.iter().enumerate().skip(1))
+            .map(|(i, &c)| mul_mod(c, i as u64 % p, p))
+            .collect();
+        let square_free = gcd_mod(&g_mod, &derivative, p).len() == 1;
         let mut seed = RANDOM_POINT;
         let mut left = IntPoly::from_i64(&[1]);
         for block in blocks {
@@ -649,7 +657,12 @@ impl PolyMatrix {
                 common = gcd_mod(&common, &determinant_poly_mod(&combination, p), p);
                 tried.push((entries, mixed));
             }
-            if common.len() <= 1 {
+            // Nothing left, or only roots of what is left already: outside it, the block
+            // keeps its rank (with g square-free modulo p, a factor of g prime to what is
+            // left reduces to one prime to it, so to `common`).
+            if common.len() <= 1
+                || (square_free && gcd_mod(&common, &left.reduced_mod(p), p).len() == common.len())
+            {
                 continue;
             }
             // Left modulo p: named over Q, the gcd with the exact determinants, from the
