@@ -788,14 +788,7 @@ impl Mixing {
 /// The determinant modulo `p` of the square matrix of polynomials over `F_p`, from its
 /// values at `deg + 1` points, `deg` the sum of the rows' degrees.
 fn determinant_poly_mod(minor: &[Vec<Vec<u64>>], p: u64) -> Vec<u64> {
-    let degree: usize = (minor.iter())
-        .map(|row| {
-            row.iter()
-                .map(|e| e.len().saturating_sub(1))
-                .max()
-                .unwrap_or(0)
-        })
-        .sum();
+    let degree = degree_bound(minor);
     let values: Vec<u64> = (0..=degree as u64)
         .map(|u| {
             let at = entries_at(minor, |e| {
@@ -813,6 +806,15 @@ fn determinant_poly_mod(minor: &[Vec<Vec<u64>>], p: u64) -> Vec<u64> {
     coeffs
 }
 
+/// A bound on the degree of the determinant of the square matrix of polynomials: the sum of
+/// its rows' degrees.
+fn degree_bound<T>(minor: &[Vec<Vec<T>>]) -> usize {
+    (minor.iter())
+        .map(|row| row.iter().map(|e| e.len().saturating_sub(1)).max())
+        .map(|d| d.unwrap_or(0))
+        .sum()
+}
+
 /// A fixed point in `F_p` standing for a random one (the golden ratio's 64 bits).
 const RANDOM_POINT: u64 = 0x9E37_79B9_7F4A_7C15;
 
@@ -824,15 +826,7 @@ fn determinant(minor: &[Vec<Vec<BigInt>>]) -> IntPoly {
     if r == 0 {
         return IntPoly::from_i64(&[1]);
     }
-    let degree: usize = minor
-        .iter()
-        .map(|row| {
-            row.iter()
-                .map(|e| e.len().saturating_sub(1))
-                .max()
-                .unwrap_or(0)
-        })
-        .sum();
+    let degree = degree_bound(minor);
     let bound: BigInt = minor
         .iter()
         .map(|row| {
