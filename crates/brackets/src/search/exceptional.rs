@@ -654,7 +654,8 @@ impl PolyMatrix {
                     |x, c| mul_mod(*x, small(c), p),
                     |a, b| (a + b) % p,
                 );
-                common = gcd_mod(&common, &determinant_poly_mod(&combination, p), p);
+                let degree = mixed.degree_bound(&entries);
+                common = gcd_mod(&common, &determinant_poly_mod(&combination, degree, p), p);
                 tried.push((entries, mixed));
             }
             // Nothing left, or only roots of what is left already: outside it, the block
@@ -674,7 +675,8 @@ impl PolyMatrix {
                 }
                 let combination =
                     mixed.apply(entries, |x: &BigInt, c| x * BigInt::from(c), |a, b| a + b);
-                named = named.gcd(&determinant(&combination));
+                let degree = mixed.degree_bound(entries);
+                named = named.gcd(&determinant_of_degree(&combination, degree));
             }
             if !named.divides(&left) {
                 left = left.lcm(&named);
@@ -741,6 +743,24 @@ impl Mixing {
         Mixing { u, v }
     }
 
+    /// A bound on the degree of `det(U M V)`, by Cauchy–Binet a combination of `M`'s minors of
+    /// its size: the sum of the largest degrees of that many rows of `M`, or of columns.
+    fn degree_bound<T>(&self, entries: &[(usize, usize, Vec<T>)]) -> usize {
+        let rank = self.u.len();
+        let largest = |mut degrees: Vec<usize>| {
+            degrees.sort_unstable_by(|a, b| b.cmp(a));
+            degrees.into_iter().take(rank).sum::<usize>()
+        };
+        let rows = self.u.first().map_or(0, Vec::len);
+        let (mut rows, mut columns) = (vec![0; rows], vec![0; self.v.len()]);
+        for (i, k, poly) in entries {
+            let degree = poly.len().saturating_sub(1);
+            rows[*i] = rows[*i].max(degree);
+            columns[*k] = columns[*k].max(degree);
+        }
+        largest(rows).min(largest(columns))
+    }
+
     /// `U M V`, its entries polynomials (lowest degree first) over the ring of `scale`
     /// (an entry's coefficient times a small integer) and `add`.
     fn apply<T: Clone + Default>(
@@ -785,10 +805,9 @@ impl Mixing {
     }
 }
 
-/// The determinant modulo `p` of the square matrix of polynomials over `F_p`, from its
-/// values at `deg + 1` points, `deg` the sum of the rows' degrees.
-fn determinant_poly_mod(minor: &[Vec<Vec<u64>>], p: u64) -> Vec<u64> {
-    let degree = degree_bound(minor);
+/// The determinant modulo `p` of the square matrix of polynomials over `F_p`, of degree at
+/// most `degree`, from its values at `degree + 1` points.
+fn determinant_poly_mod(minor: &[Vec<Vec<u64>>], degree: usize, p: u64) -> Vec<u64> {
     let values: Vec<u64> = (0..=degree as u64)
         .map(|u| {
             let at = entries_at(minor, |e| {
@@ -822,11 +841,16 @@ const RANDOM_POINT: u64 = 0x9E37_79B9_7F4A_7C15;
 /// passes twice the bound `Π_i Σ_j ‖S_ij‖₁` on its coefficients, each from its values at
 /// `deg + 1` points, then by the Chinese remainder theorem.
 fn determinant(minor: &[Vec<Vec<BigInt>>]) -> IntPoly {
+    determinant_of_degree(minor, degree_bound(minor))
+}
+
+/// [`determinant`] of a matrix whose determinant has degree at most `degree`.
+fn determinant_of_degree(minor: &[Vec<Vec<BigInt>>], degree: usize) -> IntPoly {
     let r = minor.len();
     if r == 0 {
         return IntPoly::from_i64(&[1]);
     }
-    let degree = degree_bound(minor);
+    let degree = degree.min(degree_bound(minor));
     let bound: BigInt = minor
         .iter()
         .map(|row| {
