@@ -56,19 +56,92 @@ pub(crate) fn gcd_mod(a: &[u64], b: &[u64], p: u64) -> Vec<u64> {
 }
 
 /// The remainder of `a` on division by `d` (not zero) over `F_p`.
-fn remainder_mod(mut a: Vec<u64>, d: &[u64], p: u64) -> Vec<u64> {
+fn remainder_mod(a: Vec<u64>, d: &[u64], p: u64) -> Vec<u64> {
+    div_rem_mod(a, d, p).1
+}
+
+/// The quotient and the remainder of `a` on division by `d` (not zero) over `F_p`.
+fn div_rem_mod(mut a: Vec<u64>, d: &[u64], p: u64) -> (Vec<u64>, Vec<u64>) {
+    trim(&mut a);
     let dd = d.len() - 1;
     let inverse = inverse_mod(d[dd], p);
+    let mut quotient = vec![0_u64; a.len().saturating_sub(dd)];
     while a.len() > dd {
         let lead = a.pop().expect("longer than d");
         let factor = mul_mod(lead, inverse, p);
         let shift = a.len() - dd;
+        quotient[shift] = factor;
         for (x, y) in a[shift..].iter_mut().zip(&d[..dd]) {
             *x = (*x + p - mul_mod(factor, *y, p)) % p;
         }
-        trim(&mut a);
     }
-    a
+    trim(&mut a);
+    trim(&mut quotient);
+    (quotient, a)
+}
+
+/// The ring `F_p[t]/(m)`, `m` monic of positive degree: its elements the remainders modulo
+/// `m`, coefficients lowest degree first, zero empty.
+pub(crate) struct ResidueRing<'a> {
+    m: &'a [u64],
+    p: u64,
+}
+
+impl<'a> ResidueRing<'a> {
+    /// The ring modulo the prime `p` and `m` (monic, of positive degree).
+    pub(crate) fn new(m: &'a [u64], p: u64) -> Self {
+        debug_assert!(m.len() > 1 && m.last() == Some(&1));
+        ResidueRing { m, p }
+    }
+
+    /// The element of the polynomial `a` over `F_p`.
+    pub(crate) fn reduce(&self, a: Vec<u64>) -> Vec<u64> {
+        remainder_mod(a, self.m, self.p)
+    }
+
+    /// `a b`.
+    pub(crate) fn mul(&self, a: &[u64], b: &[u64]) -> Vec<u64> {
+        if a.is_empty() || b.is_empty() {
+            return Vec::new();
+        }
+        let mut product = vec![0_u64; a.len() + b.len() - 1];
+        for (i, &x) in a.iter().enumerate() {
+            for (z, &y) in product[i..].iter_mut().zip(b) {
+                *z = (*z + mul_mod(x, y, self.p)) % self.p;
+            }
+        }
+        self.reduce(product)
+    }
+
+    /// `a − b`.
+    pub(crate) fn sub(&self, a: &[u64], b: &[u64]) -> Vec<u64> {
+        let mut out = a.to_vec();
+        out.resize(a.len().max(b.len()), 0);
+        for (x, &y) in out.iter_mut().zip(b) {
+            *x = (*x + self.p - y) % self.p;
+        }
+        trim(&mut out);
+        out
+    }
+
+    /// The inverse of `a`, when it is a unit (prime to `m`), by the extended Euclidean
+    /// algorithm.
+    pub(crate) fn inverse(&self, a: &[u64]) -> Option<Vec<u64>> {
+        // r_i ≡ s_i a modulo m.
+        let (mut r0, mut r1) = (self.m.to_vec(), self.reduce(a.to_vec()));
+        let (mut s0, mut s1): (Vec<u64>, Vec<u64>) = (Vec::new(), vec![1]);
+        while !r1.is_empty() {
+            let (q, r) = div_rem_mod(r0, &r1, self.p);
+            let s = self.sub(&s0, &self.mul(&q, &s1));
+            (r0, r1) = (r1, r);
+            (s0, s1) = (s1, s);
+        }
+        // r0 is the gcd: a unit exactly when it is a nonzero constant.
+        (r0.len() == 1).then(|| {
+            let inverse = inverse_mod(r0[0], self.p);
+            s0.iter().map(|&c| mul_mod(c, inverse, self.p)).collect()
+        })
+    }
 }
 
 /// Drops the zero leading coefficients.
@@ -531,6 +604,26 @@ mod tests {
         assert_eq!(f.gcd(&h), IntPoly::from_i64(&[1]));
         assert_eq!(IntPoly::new(Vec::new()).gcd(&f), f.primitive());
         assert_eq!(f.divide_out(&f.gcd(&g)), IntPoly::from_i64(&[1, 1]));
+    }
+
+    #[test]
+    fn modulo_a_prime_and_a_polynomial_units_are_inverted_and_zero_divisors_are_not() {
+        let p = 7;
+        // Modulo t² + 1 (irreducible modulo 7): t · (−t) = 1, (t + 1)(4 − 4t) = 8 = 1.
+        let m = [1, 0, 1];
+        let ring = ResidueRing::new(&m, p);
+        assert_eq!(ring.inverse(&[0, 1]), Some(vec![0, 6]));
+        assert_eq!(ring.inverse(&[1, 1]), Some(vec![4, 3]));
+        assert_eq!(ring.mul(&[1, 1], &[4, 3]), [1]);
+        assert_eq!(ring.reduce(vec![2, 3, 4, 5]), [5, 5]);
+        assert_eq!(ring.sub(&[1, 1], &[1, 1]), Vec::<u64>::new());
+        // Modulo (t − 1)(t − 2) = t² − 3t + 2: t − 1 divides zero, t − 3 is a unit.
+        let m = [2, 4, 1];
+        let ring = ResidueRing::new(&m, p);
+        assert_eq!(ring.inverse(&[6, 1]), None);
+        assert_eq!(ring.inverse(&[]), None);
+        let inverse = ring.inverse(&[4, 1]).unwrap();
+        assert_eq!(ring.mul(&[4, 1], &inverse), [1]);
     }
 
     #[test]
