@@ -137,7 +137,7 @@
 //!                   there), "ruled_out_roots": int (its degree, 0 when null),
 //!                   "ruled_out_real_roots": int (how many of them are real),
 //!                   "ruled_out_prime": int | null (the prime modulo which the minors were
-//!                   taken, null when no root was examined),
+//!                   taken, null when none was ruled out),
 //!                   "largest_minor": { "size", "degree" }, "zero_left_out": bool (0, a root,
 //!                   left out: H has a negative power of the parameter and no value there) } ]
 //!                   (only for `search --find-values`)
