@@ -113,7 +113,7 @@ pub fn exceptional_values_report(
     let ruled_out_real = (ruled_out.count() > 0).then(|| ruled_out.factor.real_root_count());
     let prime = ruled_out
         .prime
-        .map_or(String::new(), |p| format!(" p = {p}"));
+        .map_or(String::new(), |p| format!(" `p = {p}`"));
     // The roots ruled out, as a clause: "58 roots (not rational; 50 real)", "2 roots
     // (complex, none real)".
     let ruled_out_roots = ruled_out_real.map(|real| {

@@ -257,6 +257,13 @@ fn the_anisotropic_oscillators_irrational_roots_are_all_ruled_out() {
             assert!(text.contains(piece), "{format}: {piece}: {text}");
         }
         assert!(!text.contains("Other values may lie"), "{format}: {text}");
+        // The prime written as the formula it is.
+        let prime = match format {
+            "text" => "the prime p = ",
+            "markdown" => "the prime `p = ",
+            _ => "the prime $p = ",
+        };
+        assert!(text.contains(prime), "{format}: {text}");
     }
     let json = superint_json(&degree_six);
     let found = &json["exceptional_values"][0];
