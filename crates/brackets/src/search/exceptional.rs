@@ -19,14 +19,20 @@
 //! rational factors divided out, are ruled out where they can be ([`RuledOut`]), exactly. Take
 //! a prime `p` not dividing `g`'s leading coefficient, and for each block `b`, of generic rank
 //! `r_b`, the gcd over `F_p` of `g mod p` with `det S_b mod p` and with `d_b = det(U M_b V) mod
-//! p` for a few random small-integer `U` (`r_b × rows`) and `V` (`columns × r_b`), each from
-//! its values at `deg + 1` points (`deg` bounded by the sum of the rows' degrees of `U M_b V`).
+//! p` for a few random small-integer `U` (`r_b × rows`) and `V` (`columns × r_b`), each
+//! only modulo the gcd left so far, `c` (by elimination over `F_p[t]/(c)` with pivots that are
+//! units there), or whole from its values at `deg + 1` points (`deg` bounded, by
+//! Cauchy–Binet, by the largest degrees of `r_b` rows of `M_b`, or of `r_b` columns), whichever
+//! costs less.
 //! Where that gcd is `1`, at every root `ᾱ ∈ F̄_p` of `g mod p` some `r_b × r_b` minor of
 //! `M_b(ᾱ)` is nonzero (`det(U M V)` is, by Cauchy–Binet, a combination of them). Every root
 //! `α ∈ Q̄` of `g` is integral at every prime `𝔭 | p` of `Q(α)` (`p` does not divide the
 //! leading coefficient) and reduces modulo `𝔭` to such an `ᾱ`; the same minor at `α`, reduced,
 //! is that nonzero one, so it is nonzero: block `b` has rank `r_b` at every root of `g`. When
-//! every block passes, no root of `g` holds more integrals: a proof, whatever `U` and `V` were.
+//! every block passes, no root of `g` holds more integrals: a proof, whatever `U` and `V` were,
+//! given that `r_b`, the size of the generic minor (the rank at a point modulo a prime), is
+//! the block's generic rank, as the rational roots' search assumes too (it is, unless that
+//! point is a root of every larger minor).
 //! A block whose gcd stays nontrivial (the roots where it truly loses rank always do) has its
 //! factor named over Q: the gcd over Q of `g`, `det S_b` and the exact determinants (computed
 //! as `det S_b` is) of the combinations tried, until it is no larger than modulo `p` (unless
