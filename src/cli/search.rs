@@ -132,10 +132,11 @@ pub struct SearchArgs {
     /// than at a generic value: the rank of the equations, with the parameter kept, drops
     /// there, at a root of a determinant computed exactly. Each rational root is searched at
     /// and shown as --when 'C = VALUE' shows it, those with more integrals told apart; the
-    /// polynomial whose irrational roots were not examined is printed. The other parameters
-    /// are fixed (--fix, 1 by default). With --on, on that level set (its polynomial without
-    /// the parameter), each value searched at as --fix shows it. Not with --symbolic,
-    /// --new-only or a --when that sets the parameter.
+    /// other roots, irrational or complex, are ruled out where every block of the equations
+    /// keeps its rank there, and the polynomial of those that are not is printed. The other
+    /// parameters are fixed (--fix, 1 by default). With --on, on that level set (its
+    /// polynomial without the parameter), each value searched at as --fix shows it. Not with
+    /// --symbolic, --new-only or a --when that sets the parameter.
     #[arg(long, value_name = "PARAM", conflicts_with_all = ["symbolic", "new_only"])]
     find_values: Option<String>,
     /// With --find-values, stop with an error at a block of the equations whose minor has more

@@ -606,3 +606,22 @@ fn a_level_set_kept_at_the_fixed_value_alone_is_searched_there() {
         "{refused}"
     );
 }
+
+/// `search --help` says what becomes of the irrational roots: ruled out where every block
+/// keeps its rank, only the polynomial of the rest printed (as `--find-values` does since
+/// the rule-out, not "not examined").
+#[test]
+fn the_help_says_the_irrational_roots_are_ruled_out_where_they_can_be() {
+    let help = normalize(&superint_ok(&["search", "--help"]));
+    assert!(
+        help.contains(
+            "the other roots, irrational or complex, are ruled out where every block of the \
+             equations keeps its rank there, and the polynomial of those that are not is printed"
+        ),
+        "{help}"
+    );
+    assert!(
+        !help.contains("irrational roots were not examined"),
+        "{help}"
+    );
+}
