@@ -233,6 +233,21 @@ const COMMANDS: &[(&str, &str)] = &[
          --momenta-degree 4 --positions-degree 8 --trig-degree 0 --new-only",
     ),
     (
+        "rotor-values",
+        "superint search systems/harmonic-rotor.toml --find-values omega --on 'p_theta = 1' \
+         --fix M=1,I=1,l=1 --momenta-degree 2 --positions-degree 2 --trig-degree 2",
+    ),
+    (
+        "rotor-values-ruled-out",
+        "superint search systems/harmonic-rotor.toml --find-values omega --on 'p_theta = 1' \
+         --fix M=1,I=1,l=1 --momenta-degree 1 --positions-degree 2 --trig-degree 2",
+    ),
+    (
+        "rotor-values-inertia",
+        "superint search systems/harmonic-rotor.toml --find-values I --on 'p_theta = 1' \
+         --fix omega=1,M=1 --momenta-degree 2 --positions-degree 2 --trig-degree 2",
+    ),
+    (
         "kepler",
         "superint search systems/kepler.toml --momenta-degree 2 --positions-degree 2 \
          --trig-degree 1 --laurent",
@@ -1557,6 +1572,52 @@ fn quartic_potentials_a_minus_six_has_no_second_integral() {
         &[
             "Dimension of the space of integrals: 3.",
             "None: the known integrals generate every integral in the space.",
+        ],
+    );
+}
+
+/// Section 30: on `p_θ = 1`, the frequencies with more integrals are the resonances
+/// `ω = n/m` the space allows, every root rational; with momenta degree 1 and positions
+/// degree 2 the irrational roots `ω² = 2, 1/2` are ruled out.
+#[test]
+fn harmonic_rotor_values_on_p_theta_one_are_its_resonances() {
+    expect(
+        "rotor-values",
+        &[
+            "For a generic ω (searched at ω = 7, no root): 6 integrals (section 2).",
+            "More integrals at ω = −2, 14 integrals (section 4), at ω = −1, 20 integrals \
+             (section 6), at ω = −1/2, 12 integrals (section 8), at ω = 0, 10 integrals \
+             (section 10), at ω = 1/2, 12 integrals (section 12), at ω = 1, 20 integrals \
+             (section 14) and at ω = 2, 14 integrals (section 16).",
+            "Every root of the determinants is rational: no other value of ω has more \
+             integrals in this space.",
+        ],
+    );
+    expect(
+        "rotor-values-ruled-out",
+        &[
+            "More integrals at ω = −2, 6 integrals (section 4), at ω = −1, 6 integrals \
+             (section 6), at ω = 0, 4 integrals (section 8), at ω = 1, 6 integrals (section \
+             10) and at ω = 2, 6 integrals (section 12).",
+            "The determinants' other 4 roots (not rational; 4 real) hold no more integrals in \
+             this space: at each, every block of the equations keeps its generic rank",
+            "No value of ω but those above has more integrals in this space.",
+        ],
+    );
+}
+
+/// Section 30: on `p_θ = 1` with `ω = 1`, the moments of inertia with more integrals are
+/// `I = n/m`; `I = 0` is said to be no value.
+#[test]
+fn harmonic_rotor_moments_of_inertia_on_p_theta_one_are_its_resonances() {
+    expect(
+        "rotor-values-inertia",
+        &[
+            "More integrals at I = −2, 14 integrals (section 4), at I = −1, 20 integrals \
+             (section 6), at I = −1/2, 12 integrals (section 8), at I = 1/2, 12 integrals \
+             (section 10), at I = 1, 20 integrals (section 12) and at I = 2, 14 integrals \
+             (section 14).",
+            "I = 0, a root of the determinants, is no value",
         ],
     );
 }

@@ -607,6 +607,163 @@ fn a_level_set_kept_at_the_fixed_value_alone_is_searched_there() {
     );
 }
 
+const HARMONIC_ROTOR: &str = "systems/harmonic-rotor.toml";
+
+/// `--find-values parameter` for the harmonic rotor on the level set `p_θ = 1`, the other
+/// parameters at `fix`, the space of momenta degree `momenta`, positions degree `positions`
+/// and trigonometric order `order`: its `exceptional_values` entry, every integral proved,
+/// each value's (and the generic value's) dimension checked by the ordinary search there,
+/// `--fix parameter=VALUE --on 'p_theta = 1'`.
+fn rotor_values(
+    parameter: &str,
+    fix: &str,
+    [momenta, positions, order]: [&str; 3],
+) -> serde_json::Value {
+    let space = [
+        "--on",
+        "p_theta = 1",
+        "--momenta-degree",
+        momenta,
+        "--positions-degree",
+        positions,
+        "--trig-degree",
+        order,
+    ];
+    let find = [
+        &[
+            "search",
+            HARMONIC_ROTOR,
+            "--find-values",
+            parameter,
+            "--fix",
+            fix,
+        ][..],
+        &space,
+    ]
+    .concat();
+    let json = superint_json(&find);
+    assert_eq!(json["summary"]["all_proved"], true);
+    let found = json["exceptional_values"][0].clone();
+    let dimension_at = |value: &str| {
+        let fixed = format!("{fix},{parameter}={value}");
+        let plain = [&["search", HARMONIC_ROTOR, "--fix", &fixed][..], &space].concat();
+        superint_json(&plain)["searches"][0]["dimension"]
+            .as_u64()
+            .unwrap()
+    };
+    let generic = found["generic"]["dimension"].as_u64().unwrap();
+    assert_eq!(
+        dimension_at(found["generic"]["value"].as_str().unwrap()),
+        generic
+    );
+    for v in found["values"].as_array().unwrap() {
+        let (value, dimension) = (v["value"].as_str().unwrap(), v["dimension"].as_u64());
+        assert!(dimension.unwrap() > generic, "{value}");
+        assert_eq!(Some(dimension_at(value)), dimension, "{value}");
+    }
+    found
+}
+
+/// The values of `found`, as JSON writes them.
+fn values_found(found: &serde_json::Value) -> Vec<String> {
+    (found["values"].as_array().unwrap().iter())
+        .map(|v| v["value"].as_str().unwrap().to_string())
+        .collect()
+}
+
+/// The resonant ratios `n/m` (`K_{m,n} = Z^m e^{−inθ}`, conserved where `mω = n p_θ/I`) of
+/// a space that holds `Z^m` for `1 ≤ m ≤ degree` and `e^{−inθ}` for `|n| ≤ order`, increasing,
+/// as JSON writes them (`−n/m` where `n < 0`: `K̄_{m,|n|}`, or `ω < 0`), with `0` (`n = 0`,
+/// `Z^m` itself at `ω = 0`) when `with_zero`.
+fn resonances(degree: i64, order: i64, with_zero: bool) -> Vec<String> {
+    let gcd = |a: i64, b: i64| {
+        (1..=a.abs().max(b))
+            .rev()
+            .find(|d| a % d == 0 && b % d == 0)
+    };
+    let mut ratios: Vec<(i64, i64)> = (1..=degree)
+        .flat_map(|m| (-order..=order).map(move |n| (n, m)))
+        .filter(|&(n, _)| with_zero || n != 0)
+        .map(|(n, m)| {
+            let d = gcd(n, m).unwrap_or(1);
+            (n / d, m / d)
+        })
+        .collect();
+    ratios.sort_by(|a, b| (a.0 * b.1).cmp(&(b.0 * a.1)));
+    ratios.dedup();
+    (ratios.into_iter())
+        .map(|(n, m)| match m {
+            1 => n.to_string(),
+            _ => format!("{n}/{m}"),
+        })
+        .collect()
+}
+
+/// The paper's resonances asked the other way round: on `p_θ = 1` (`I = M = 1`), the values
+/// of `ω` with more integrals than a generic one, quadratic in `Z` and of order 1 in `θ`,
+/// are exactly `ω = n/m` for `m ≤ 2`, `|n| ≤ 1`, each confirmed by the ordinary search
+/// there, and every root of the determinants is rational.
+#[test]
+fn harmonic_rotor_resonances_found_from_h_alone_on_p_theta_one() {
+    let found = rotor_values("omega", "M=1,I=1,l=1", ["2", "2", "1"]);
+    assert_eq!(values_found(&found), resonances(2, 1, true));
+    assert!(found["unexamined"].is_null());
+    assert_eq!(found["ruled_out_roots"], 0);
+}
+
+/// With momenta degree 1 and positions degree 2, the determinants have the irrational roots
+/// `ω² = 2` and `ω² = 1/2`, ruled out: every block keeps its rank there. The same equations
+/// in `w = ω²` (the Hamiltonian holds `ω²` alone) have them as the rational roots `w = 2` and
+/// `w = 1/2`, where the ordinary search finds nothing more: the rule-out is right.
+#[test]
+fn harmonic_rotor_irrational_roots_on_p_theta_one_are_ruled_out_none_holding_more() {
+    let found = rotor_values("omega", "M=1,I=1,l=1", ["1", "2", "2"]);
+    assert_eq!(values_found(&found), resonances(1, 2, true));
+    assert!(found["unexamined"].is_null());
+    assert_eq!(found["ruled_out"], "2*omega^4 - 5*omega^2 + 2");
+    assert_eq!(found["ruled_out_roots"], 4);
+    assert_eq!(found["ruled_out_real_roots"], 4);
+    let squared = scratch_text(
+        "exceptional-values",
+        "rotor-in-omega-squared.toml",
+        "name = \"rotor\"\n\
+         hamiltonian = \"(p_x^2 + p_y^2)/2 + w*(x^2 + y^2)/2 + p_theta^2/2\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\nangles = [\"theta\"]\nparameters = [\"w\"]\n",
+    );
+    let text = normalize(&superint_ok(&[
+        "search",
+        squared.to_str().unwrap(),
+        "--find-values",
+        "w",
+        "--on",
+        "p_theta = 1",
+        "--momenta-degree",
+        "1",
+        "--positions-degree",
+        "2",
+        "--trig-degree",
+        "2",
+    ]));
+    assert!(
+        text.contains(
+            "Roots of the determinants where the search finds no more integrals: w = 1/2 and \
+             w = 2."
+        ),
+        "{text}"
+    );
+}
+
+/// On `p_θ = 1` with `ω = 1`, the moments of inertia with more integrals are `I = n/m`
+/// (`m ≤ 2`, `|n| ≤ 1`, `n ≠ 0`); `I = 0`, a root once `p_θ²/(2I)` is made a polynomial, is
+/// said to be no value.
+#[test]
+fn harmonic_rotor_resonant_moments_of_inertia_found_on_p_theta_one() {
+    let found = rotor_values("I", "omega=1,M=1", ["2", "2", "1"]);
+    assert_eq!(values_found(&found), resonances(2, 1, false));
+    assert_eq!(found["zero_left_out"], true);
+    assert!(found["unexamined"].is_null());
+}
+
 /// `search --help` says what becomes of the irrational roots: ruled out where every block
 /// keeps its rank, only the polynomial of the rest printed (as `--find-values` does since
 /// the rule-out, not "not examined").
