@@ -904,8 +904,16 @@ fn find_values(
             .find(|(v, _)| v == value)
             .map(|(_, at)| at)
             .expect("each value confirmed was searched");
-        let report = command_line_report_of(file, &subject.the_name(), system, at, format, r)
-            .map_err(refused)?;
+        let report = command_line_report_of(
+            file,
+            &subject.the_name(),
+            system,
+            at,
+            format,
+            r,
+            Some(parameter),
+        )
+        .map_err(refused)?;
         searches.push(report);
     }
     let mut report = exceptional_values_report(

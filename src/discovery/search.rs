@@ -780,14 +780,15 @@ pub fn command_line_search_report(
     format: Format,
 ) -> Result<(Report, SearchResult), EngineError> {
     searched_and_reported(system, options, |r| {
-        command_line_report_of(file, name, system, options, format, r)
+        command_line_report_of(file, name, system, options, format, r, None)
     })
 }
 
 /// [`command_line_search_report`] of the search `r` already run with `options`: the report
 /// of what it found, as that search's, with no search again (`superint search
-/// --find-values` shows the searches that confirmed its values so). Its time is that of the
-/// report alone.
+/// --find-values` shows the searches that confirmed its values so, with the parameter it
+/// solves for as `solved`, whose other values its advice does not propose). Its time is
+/// that of the report alone.
 pub fn command_line_report_of(
     file: Option<&LoadedSystem>,
     name: &str,
@@ -795,6 +796,7 @@ pub fn command_line_report_of(
     options: &SearchOptions,
     format: Format,
     r: &SearchResult,
+    solved: Option<Var>,
 ) -> Result<Report, EngineError> {
     let restate = file.map(|file| Restate {
         file,
@@ -804,7 +806,7 @@ pub fn command_line_report_of(
     report_of(
         (name, system),
         options,
-        (Caller::CommandLine, restate.as_ref(), facts),
+        (Caller::CommandLine, restate.as_ref(), facts, solved),
         r,
     )
 }
@@ -892,7 +894,7 @@ fn search_report_with(
     facts: bool,
 ) -> Result<(Report, SearchResult), EngineError> {
     searched_and_reported(system, options, |r| {
-        report_of((name, system), options, (caller, restate, facts), r)
+        report_of((name, system), options, (caller, restate, facts, None), r)
     })
 }
 
@@ -915,7 +917,7 @@ fn searched_and_reported(
 fn report_of(
     (name, system): (&str, &System),
     options: &SearchOptions,
-    (caller, restate, facts): (Caller, Option<&Restate<'_>>, bool),
+    (caller, restate, facts, solved): (Caller, Option<&Restate<'_>>, bool, Option<Var>),
     r: &SearchResult,
 ) -> Result<Report, EngineError> {
     let start = Instant::now();
@@ -923,7 +925,7 @@ fn report_of(
     let families: Vec<&str> = (restate.iter())
         .flat_map(|r| r.file.family_names())
         .collect();
-    let shared = Shared::new(system, &families, options, r, caller, facts);
+    let shared = Shared::new(system, &families, options, r, (caller, solved), facts);
     let sections = vec![
         shared.search_section(system, options, r)?,
         shared.basis_section(r, restate)?,
@@ -966,6 +968,9 @@ struct Shared {
     names: Names,
     /// Who the report is for, whose options its advice names.
     caller: Caller,
+    /// The parameter a `--find-values` run solves for, whose other values the advice does
+    /// not propose (`None` in an ordinary search).
+    solved: Option<Var>,
     /// Whether the report holds what only JSON shows: the search's facts
     /// ([`Shared::search_facts`]) and each integral's claim as text to read back.
     facts: bool,
@@ -978,7 +983,7 @@ impl Shared {
         taken: &[&str],
         options: &SearchOptions,
         r: &SearchResult,
-        caller: Caller,
+        (caller, solved): (Caller, Option<Var>),
         facts: bool,
     ) -> Self {
         let vars = system.vars();
@@ -994,6 +999,7 @@ impl Shared {
             shown: shown_integrals(r),
             names: Names::of_system(system),
             caller,
+            solved,
             facts,
         }
     }
@@ -1042,7 +1048,7 @@ impl Shared {
             system,
             self.held.fixed(),
             for_every_value,
-            self.caller,
+            (self.caller, self.solved),
         ));
         entries.extend(self.symbolic_note());
         entries.extend(self.dimensions(r, vars));
@@ -1515,7 +1521,7 @@ fn parameter_notes(
     system: &System,
     fixed: &str,
     for_every_value: usize,
-    caller: Caller,
+    (caller, solved): (Caller, Option<Var>),
 ) -> Vec<Entry> {
     let mut notes = Vec::new();
     if r.parameters.is_empty() {
@@ -1528,7 +1534,7 @@ fn parameter_notes(
         "Parameters fixed for the linear algebra: `{fixed}`{off_one}; {lift}."
     )));
     if !(r.liftable && r.all_symbolic()) {
-        notes.push(Entry::Text(unlifted_note(r, system, caller)));
+        notes.extend(unlifted_note(r, system, caller, solved).map(Entry::Text));
     }
     notes
 }
@@ -1562,18 +1568,36 @@ fn how_lifted(r: &SearchResult, for_every_value: usize) -> String {
 /// value (`--symbolic`, `SearchOptions::symbolic`) or at others (`--fix`,
 /// `SearchOptions::fix`); on a level set, other values only where it is searched at them
 /// ([`LevelSet::check`](brackets::search::LevelSet::check)), else that it is refused there.
-fn unlifted_note(r: &SearchResult, system: &System, caller: Caller) -> String {
+/// The parameter `solved` (a `--find-values` run's) is left out of it, and with nothing
+/// else fixed there is no note.
+fn unlifted_note(
+    r: &SearchResult,
+    system: &System,
+    caller: Caller,
+    solved: Option<Var>,
+) -> Option<String> {
     let vars = system.vars();
-    let names: Vec<&str> = r
-        .parameters
-        .iter()
+    let parameters: Vec<(Var, Rational)> = (r.parameters.iter())
+        .filter(|(v, _)| Some(*v) != solved)
+        .cloned()
+        .collect();
+    if parameters.is_empty() {
+        return None;
+    }
+    let names: Vec<&str> = (parameters.iter())
         .map(|(v, _)| vars.variable(*v).name())
         .collect();
-    let others = other_values(&r.parameters);
+    let others = other_values(&parameters);
     let shown: Vec<String> = (others.iter().zip(&names))
         .map(|((_, value), n)| format!("{n}={value}"))
         .collect();
-    let refused = (r.on.as_ref()).is_some_and(|on| on.level.check(system, &others).is_err());
+    // The level set checked at the others' values, the solved parameter's kept.
+    let checked: Vec<(Var, Rational)> = (r.parameters.iter())
+        .filter(|(v, _)| Some(*v) == solved)
+        .cloned()
+        .chain(others.iter().cloned())
+        .collect();
+    let refused = (r.on.as_ref()).is_some_and(|on| on.level.check(system, &checked).is_err());
     let how = match caller {
         // On a level set nothing is kept symbolic: other values are what is left, those it is
         // searched at.
@@ -1605,11 +1629,11 @@ fn unlifted_note(r: &SearchResult, system: &System, caller: Caller) -> String {
             shown.join(", ").replace('=', " = ")
         ),
     };
-    format!(
+    Some(format!(
         "What is not lifted holds at these values, where the system may have more \
          symmetry than in general (special values, equal or in a rational ratio, can add \
          integrals): for every value, {how}."
-    )
+    ))
 }
 
 /// Other values for the fixed `parameters`, to compare with: the first primes, each

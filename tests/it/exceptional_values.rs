@@ -782,3 +782,54 @@ fn the_help_says_the_irrational_roots_are_ruled_out_where_they_can_be() {
         "{help}"
     );
 }
+
+/// Inside a `--find-values omega` run, a value's search proposes other values of the other
+/// fixed parameters alone, never of `omega`, whose values are the run's point; the ordinary
+/// search at the same value still proposes one for `omega`. With no other parameter fixed
+/// (the oscillator on a level set), the value's search proposes none.
+#[test]
+fn a_find_values_search_proposes_no_other_value_of_the_parameter_solved_for() {
+    let space = [
+        "--on",
+        "p_theta = 1",
+        "--momenta-degree",
+        "2",
+        "--positions-degree",
+        "2",
+        "--trig-degree",
+        "2",
+    ];
+    let run = |head: &[&str]| normalize(&superint_ok(&[head, &space[..]].concat()));
+    let found = run(&[
+        "search",
+        HARMONIC_ROTOR,
+        "--find-values",
+        "omega",
+        "--fix",
+        "M=1,I=1,l=1",
+    ]);
+    assert!(
+        found.contains("compare with other values (--fix M=2,I=3,l=5)"),
+        "{found}"
+    );
+    assert!(!found.contains("omega="), "{found}");
+    let plain = run(&["search", HARMONIC_ROTOR, "--fix", "M=1,I=1,l=1,omega=2"]);
+    assert!(
+        plain.contains("compare with other values (--fix M=2,omega=3,I=5,l=7)"),
+        "{plain}"
+    );
+    let file = oscillator("on-a-level-set.toml", "(x^2 + a*y^2)/2");
+    let args = [
+        "search",
+        file.to_str().unwrap(),
+        "--find-values",
+        "a",
+        "--on",
+        "p_x^2 + x^2 = 1",
+        "--positions-degree",
+        "2",
+    ];
+    let alone = normalize(&superint_ok(&args));
+    assert!(alone.contains("More integrals at a = 0"), "{alone}");
+    assert!(!alone.contains("What is not lifted"), "{alone}");
+}
