@@ -111,9 +111,18 @@ pub fn exceptional_values_report(
         .map(|_| found.unexamined.real_root_count());
     let ruled_out = &found.ruled_out;
     let ruled_out_real = (ruled_out.count() > 0).then(|| ruled_out.factor.real_root_count());
+    // How the blocks were shown to keep their rank: modulo the prime, and some, where a root
+    // stayed common modulo it, by exact determinants.
     let prime = ruled_out
         .prime
         .map_or(String::new(), |p| format!(" `p = {p}`"));
+    let shown_how = match ruled_out.exact_blocks {
+        0 => format!("shown modulo the prime{prime}"),
+        k => format!(
+            "shown modulo the prime{prime} and, for {}, by exact determinants over Q",
+            counted(k, "block")
+        ),
+    };
     // The roots ruled out, as a clause: "58 roots (not rational; 50 real)", "2 roots
     // (complex, none real)".
     let ruled_out_roots = ruled_out_real.map(|real| {
@@ -140,9 +149,8 @@ pub fn exceptional_values_report(
             };
             match &ruled_out_roots {
                 Some(roots) => format!(
-                    "{left} The determinants' other {roots} hold no more integrals in this \
-                     space: at each, every block of the equations keeps its generic rank (shown \
-                     modulo the prime{prime})."
+                    "{left} The determinants' other {roots} hold no more integrals in this space: at each, every \
+                     block of the equations keeps its generic rank ({shown_how})."
                 ),
                 None => left,
             }
@@ -150,8 +158,8 @@ pub fn exceptional_values_report(
         _ => match &ruled_out_roots {
             Some(roots) => format!(
                 "The determinants' other {roots} hold no more integrals in this space: at each, \
-                 every block of the equations keeps its generic rank (shown modulo the \
-                 prime{prime}). No value of `{t}` but those above has more integrals in this space."
+                 every block of the equations keeps its generic rank ({shown_how}). No value of \
+                 `{t}` but those above has more integrals in this space."
             ),
             None => format!("Every root of the determinants is rational: no other value of `{t}` has more integrals in this space."),
         },

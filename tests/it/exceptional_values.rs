@@ -149,6 +149,15 @@ fn an_irrational_value_is_reported_with_its_polynomial_not_claimed() {
         text.contains("The determinants' other 6 roots (not rational; 6 real) hold no more integrals in this space"),
         "{text}"
     );
+    // The block where the isotropic roots stay common modulo the prime was settled by its
+    // exact determinants over Q, and the text says so.
+    assert!(
+        text.replace('\n', " ").contains(
+            "(shown modulo the prime p = 4611686018427387847 and, for 1 block, by exact \
+             determinants over Q)"
+        ),
+        "{text}"
+    );
     // JSON carries the counts beside the polynomials.
     let json = superint_json(&args);
     let found = &json["exceptional_values"][0];
@@ -264,6 +273,8 @@ fn the_anisotropic_oscillators_irrational_roots_are_all_ruled_out() {
             _ => "the prime $p = ",
         };
         assert!(text.contains(prime), "{format}: {text}");
+        // Every block settled modulo the prime: no exact determinant is claimed.
+        assert!(!text.contains("exact determinants"), "{format}: {text}");
     }
     let json = superint_json(&degree_six);
     let found = &json["exceptional_values"][0];

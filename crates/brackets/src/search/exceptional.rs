@@ -160,6 +160,9 @@ pub struct RuledOut {
     /// keeps its rank at every one of its roots; a block where they leave some had its
     /// minors' determinants computed exactly and their gcd with it taken over Q.
     pub prime: Option<u64>,
+    /// How many blocks were settled so, by exact determinants over Q rather than modulo
+    /// [`RuledOut::prime`] alone.
+    pub exact_blocks: usize,
 }
 
 impl RuledOut {
@@ -168,6 +171,7 @@ impl RuledOut {
         RuledOut {
             factor: IntPoly::from_i64(&[1]),
             prime: None,
+            exact_blocks: 0,
         }
     }
 
@@ -644,6 +648,7 @@ impl PolyMatrix {
         let square_free = gcd_mod(&g_mod, &derivative, p).len() == 1;
         let mut seed = RANDOM_POINT;
         let mut left = IntPoly::from_i64(&[1]);
+        let mut exact_blocks = 0;
         for block in blocks {
             // Modulo p: the roots of g where the minor and each combination tried vanish.
             let mut common = gcd_mod(&g_mod, &block.determinant.reduced_mod(p), p);
@@ -682,6 +687,7 @@ impl PolyMatrix {
             }
             // Left modulo p: named over Q, the gcd with the exact determinants, from the
             // minor's and those of the combinations tried until it is no larger.
+            exact_blocks += 1;
             let mut named = g.gcd(block.determinant);
             for (entries, mixed) in &tried {
                 if named.degree() <= Some(common.len() - 1) {
@@ -702,6 +708,7 @@ impl PolyMatrix {
             RuledOut {
                 factor,
                 prime: Some(p),
+                exact_blocks,
             },
         )
     }
