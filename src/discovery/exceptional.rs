@@ -147,9 +147,14 @@ pub fn exceptional_values_report(
                      that it may hold more integrals (not examined: they are not rational)."
                 ),
             };
+            // "The determinants' other" said once: the left part said it where none is real.
+            let rest = match real {
+                0 => "The remaining",
+                _ => "The determinants' other",
+            };
             match &ruled_out_roots {
                 Some(roots) => format!(
-                    "{left} The determinants' other {roots} hold no more integrals in this space: at each, every \
+                    "{left} {rest} {roots} hold no more integrals in this space: at each, every \
                      block of the equations keeps its generic rank ({shown_how})."
                 ),
                 None => left,

@@ -844,3 +844,37 @@ fn a_find_values_search_proposes_no_other_value_of_the_parameter_solved_for() {
     assert!(alone.contains("More integrals at a = 0"), "{alone}");
     assert!(!alone.contains("What is not lifted"), "{alone}");
 }
+
+/// The oscillator `x² + (a² + 2)y²`, isotropic at `a² = −1` and free in `y` at `a² = −2`:
+/// the factor left, `a⁴ + 3a² + 2`, has no real root, and the text says so once with the
+/// roots ruled out after it (`a² = 2`, `a² = −3/2`, where the frequencies are 1:2 and 2:1),
+/// two of its blocks settled by exact determinants over Q, the others modulo the prime;
+/// JSON counts no real root left.
+#[test]
+fn an_unexamined_factor_with_no_real_root_is_said_so_once_with_what_was_ruled_out() {
+    let file = oscillator("complex.toml", "(x^2 + (a^2 + 2)*y^2)/2");
+    let args = [
+        "search",
+        file.to_str().unwrap(),
+        "--find-values",
+        "a",
+        "--positions-degree",
+        "2",
+    ];
+    let text = normalize(&superint_ok(&args)).replace('\n', " ");
+    for piece in [
+        "No rational value of a has more integrals.",
+        "The determinants' other roots, those of a⁴ + 3a² + 2 (degree 4), are none of them real",
+        "The remaining 4 roots (not rational; 2 real) hold no more integrals in this space",
+        "and, for 2 blocks, by exact determinants over Q).",
+    ] {
+        assert!(text.contains(piece), "{piece}: {text}");
+    }
+    assert_eq!(text.matches("The determinants' other").count(), 1, "{text}");
+    let json = superint_json(&args);
+    let found = &json["exceptional_values"][0];
+    assert_eq!(found["unexamined"], "a^4 + 3*a^2 + 2");
+    assert_eq!(found["unexamined_real_roots"], 0);
+    assert_eq!(found["ruled_out"], "2*a^4 - a^2 - 6");
+    assert_eq!(found["ruled_out_real_roots"], 2);
+}
