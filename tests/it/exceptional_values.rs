@@ -118,18 +118,17 @@ fn oscillator(name: &str, potential: &str) -> std::path::PathBuf {
     scratch_text("exceptional-values", name, &text)
 }
 
+/// `superint search FILE --find-values a` with `extra`, as arguments.
+fn values_of_a<'a>(file: &'a std::path::Path, extra: &[&'a str]) -> Vec<&'a str> {
+    let find = ["search", file.to_str().unwrap(), "--find-values", "a"];
+    [&find[..], extra].concat()
+}
+
 #[test]
 fn an_irrational_value_is_reported_with_its_polynomial_not_claimed() {
     // Isotropic where a² = 2: the value √2 is not rational.
     let file = oscillator("irrational.toml", "(x^2 + (a^2 - 1)*y^2)/2");
-    let args = [
-        "search",
-        file.to_str().unwrap(),
-        "--find-values",
-        "a",
-        "--positions-degree",
-        "2",
-    ];
+    let args = values_of_a(&file, &["--positions-degree", "2"]);
     let text = normalize(&superint_ok(&args));
     assert!(text.contains("More integrals at a = −1"), "{text}");
     // Short: whole, with its degree.
@@ -800,16 +799,10 @@ fn the_help_says_the_irrational_roots_are_ruled_out_where_they_can_be() {
 /// (the oscillator on a level set), the value's search proposes none.
 #[test]
 fn a_find_values_search_proposes_no_other_value_of_the_parameter_solved_for() {
-    let space = [
-        "--on",
-        "p_theta = 1",
-        "--momenta-degree",
-        "2",
-        "--positions-degree",
-        "2",
-        "--trig-degree",
-        "2",
-    ];
+    let degrees = "--momenta-degree 2 --positions-degree 2 --trig-degree 2";
+    let space: Vec<&str> = (["--on", "p_theta = 1"].into_iter())
+        .chain(degrees.split(' '))
+        .collect();
     let run = |head: &[&str]| normalize(&superint_ok(&[head, &space[..]].concat()));
     let found = run(&[
         "search",
@@ -830,16 +823,10 @@ fn a_find_values_search_proposes_no_other_value_of_the_parameter_solved_for() {
         "{plain}"
     );
     let file = oscillator("on-a-level-set.toml", "(x^2 + a*y^2)/2");
-    let args = [
-        "search",
-        file.to_str().unwrap(),
-        "--find-values",
-        "a",
-        "--on",
-        "p_x^2 + x^2 = 1",
-        "--positions-degree",
-        "2",
-    ];
+    let args = values_of_a(
+        &file,
+        &["--on", "p_x^2 + x^2 = 1", "--positions-degree", "2"],
+    );
     let alone = normalize(&superint_ok(&args));
     assert!(alone.contains("More integrals at a = 0"), "{alone}");
     assert!(!alone.contains("What is not lifted"), "{alone}");
@@ -853,23 +840,18 @@ fn a_find_values_search_proposes_no_other_value_of_the_parameter_solved_for() {
 #[test]
 fn an_unexamined_factor_with_no_real_root_is_said_so_once_with_what_was_ruled_out() {
     let file = oscillator("complex.toml", "(x^2 + (a^2 + 2)*y^2)/2");
-    let args = [
-        "search",
-        file.to_str().unwrap(),
-        "--find-values",
-        "a",
-        "--positions-degree",
-        "2",
-    ];
+    let args = values_of_a(&file, &["--positions-degree", "2"]);
     let text = normalize(&superint_ok(&args)).replace('\n', " ");
-    for piece in [
-        "No rational value of a has more integrals.",
-        "The determinants' other roots, those of a⁴ + 3a² + 2 (degree 4), are none of them real",
-        "The remaining 4 roots (not rational; 2 real) hold no more integrals in this space",
-        "and, for 2 blocks, by exact determinants over Q).",
-    ] {
-        assert!(text.contains(piece), "{piece}: {text}");
-    }
+    // One sentence on the roots left, then one on those ruled out.
+    let said = "The determinants' other roots, those of a⁴ + 3a² + 2 (degree 4), are none of \
+                them real: no other real value of a has more integrals in this space (the \
+                complex ones were not examined). The remaining 4 roots (not rational; 2 real) \
+                hold no more integrals in this space";
+    assert!(text.contains(said), "{text}");
+    assert!(
+        text.contains("and, for 2 blocks, by exact determinants over Q)."),
+        "{text}"
+    );
     assert_eq!(text.matches("The determinants' other").count(), 1, "{text}");
     let json = superint_json(&args);
     let found = &json["exceptional_values"][0];
