@@ -55,6 +55,15 @@ pub(crate) fn gcd_mod(a: &[u64], b: &[u64], p: u64) -> Vec<u64> {
     a
 }
 
+/// Whether `u` (over `F_p`, of degree at least 1) has no repeated root: `gcd(u, u′)` is a
+/// nonzero constant.
+pub(crate) fn is_square_free_mod(u: &[u64], p: u64) -> bool {
+    let derivative: Vec<u64> = (u.iter().enumerate().skip(1))
+        .map(|(i, &c)| mul_mod(c, i as u64 % p, p))
+        .collect();
+    gcd_mod(u, &derivative, p).len() == 1
+}
+
 /// The remainder of `a` on division by `d` (not zero) over `F_p`.
 fn remainder_mod(a: Vec<u64>, d: &[u64], p: u64) -> Vec<u64> {
     div_rem_mod(a, d, p).1

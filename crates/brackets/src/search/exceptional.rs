@@ -95,7 +95,7 @@ use trigpoly::{Expr, Rational, Var, VarKind, Vars};
 use crate::error::{EngineError, EngineLimit};
 use crate::modular::{big_mod, inverse_mod, mul_mod, previous_prime, PRIME};
 use crate::system::System;
-use crate::univariate::{gcd_mod, IntPoly, ResidueRing};
+use crate::univariate::{gcd_mod, is_square_free_mod, IntPoly, ResidueRing};
 
 use super::problem::{blocks, canonical, Problem};
 use super::{
@@ -642,10 +642,7 @@ impl PolyMatrix {
         }
         let g_mod = g.reduced_mod(p);
         // Square-free modulo p, g's factors over Q reduce to factors prime to each other.
-        let derivative: Vec<u64> = (g_mod.iter().enumerate().skip(1))
-            .map(|(i, &c)| mul_mod(c, i as u64 % p, p))
-            .collect();
-        let square_free = gcd_mod(&g_mod, &derivative, p).len() == 1;
+        let square_free = is_square_free_mod(&g_mod, p);
         let mut seed = RANDOM_POINT;
         let mut left = IntPoly::from_i64(&[1]);
         let mut exact_blocks = 0;

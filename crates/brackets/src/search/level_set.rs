@@ -23,8 +23,9 @@ use trigpoly::{
 
 use crate::claim::Condition;
 use crate::error::EngineError;
-use crate::modular::{Field, Fp};
+use crate::modular::{Field, Fp, PRIME};
 use crate::system::System;
+use crate::univariate::{gcd_mod, is_square_free_mod};
 
 use super::parameters::fix_parameters;
 
@@ -600,7 +601,7 @@ fn has_no_repeated_factor(p: &Expr, order: &DivisionOrder) -> bool {
     let degree = degree_in(p, order);
     (0..LINES_TRIED).any(|k| {
         restricted_to_line(p, order, &line(k, order)).is_some_and(|u| {
-            u.len() as i64 - 1 == degree && univariate::gcd_with_derivative_is_constant(&u)
+            u.len() as i64 - 1 == degree && is_square_free_mod(&residues(&u), PRIME)
         })
     })
 }
@@ -670,9 +671,16 @@ fn restricted_to_line(p: &Expr, order: &DivisionOrder, line: &[(i64, i64)]) -> O
     Some(univariate::trimmed(sum))
 }
 
-/// Polynomials in one variable over `F_p` ([`Fp`], `p =` [`PRIME`](crate::modular::PRIME), far above any degree a
+/// The residues of `u`'s coefficients, as the crate's polynomials over `F_p` take them
+/// ([`gcd_mod`], [`is_square_free_mod`]).
+fn residues(u: &[Fp]) -> Vec<u64> {
+    u.iter().map(|c| c.value()).collect()
+}
+
+/// Polynomials in one variable over `F_p` ([`Fp`], `p =` [`PRIME`], far above any degree a
 /// level set has, so that the derivative of `tⁿ` is not 0 modulo it), as coefficient vectors
-/// (lowest first, no trailing zero), for the square-free test of a level set.
+/// (lowest first, no trailing zero): a polynomial restricted to a line, whose gcds the
+/// square-free and coprime tests of a level set take ([`gcd_mod`]).
 mod univariate {
     use crate::modular::{Field, Fp};
 
@@ -699,39 +707,6 @@ mod univariate {
             }
         }
         product
-    }
-
-    /// The remainder of `u` on division by `w` (`w` nonzero, trimmed).
-    fn remainder(u: &[Fp], w: &[Fp]) -> Vec<Fp> {
-        let mut r = trimmed(u.to_vec());
-        let lead = w[w.len() - 1].inv();
-        while r.len() >= w.len() {
-            let factor = r[r.len() - 1].mul(&lead);
-            let shift = r.len() - w.len();
-            for (i, c) in w.iter().enumerate() {
-                r[shift + i] = r[shift + i].sub(&factor.mul(c));
-            }
-            r = trimmed(r);
-        }
-        r
-    }
-
-    /// Whether `gcd(u, u′)` is a nonzero constant: `u` (of degree at least 1) has no repeated
-    /// root.
-    pub(super) fn gcd_with_derivative_is_constant(u: &[Fp]) -> bool {
-        let derivative: Vec<Fp> = (1..u.len()).map(|i| u[i].mul(&Fp::new(i as u64))).collect();
-        gcd_is_constant(u, &derivative)
-    }
-
-    /// Whether `gcd(u, w)` is a nonzero constant (Euclid's algorithm): `u` and `w` have no
-    /// common root.
-    pub(super) fn gcd_is_constant(u: &[Fp], w: &[Fp]) -> bool {
-        let (mut a, mut b) = (trimmed(u.to_vec()), trimmed(w.to_vec()));
-        while !b.is_empty() {
-            let r = remainder(&a, &b);
-            (a, b) = (b, r);
-        }
-        a.len() == 1
     }
 }
 
@@ -879,7 +854,8 @@ impl OnLevel {
             let u = restricted_to_line(&p_top, &self.order, &line);
             let w = restricted_to_line(&f_top, &self.order, &line);
             u.zip(w).is_some_and(|(u, w)| {
-                u.len() as i64 - 1 == degree && univariate::gcd_is_constant(&u, &w)
+                u.len() as i64 - 1 == degree
+                    && gcd_mod(&residues(&u), &residues(&w), PRIME).len() == 1
             })
         }))
     }
