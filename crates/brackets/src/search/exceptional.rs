@@ -823,24 +823,14 @@ impl Mixing {
     }
 }
 
-/// The determinant modulo `p` of the square matrix of polynomials over `F_p`, of degree at
-/// most `degree`, from its values at `degree + 1` points.
-fn determinant_poly_mod(minor: &[Vec<Vec<u64>>], degree: usize, p: u64) -> Vec<u64> {
+/// The determinant modulo `p` of the square matrix of polynomials (of integers, or of
+/// residues modulo `p`), of degree at most `degree`: its `degree + 1` coefficients, lowest
+/// first, from its values at `0, 1, …, degree`.
+fn determinant_poly_mod<T: Residue>(minor: &[Vec<Vec<T>>], degree: usize, p: u64) -> Vec<u64> {
     let values: Vec<u64> = (0..=degree as u64)
-        .map(|u| {
-            let at = entries_at(minor, |e| {
-                e.iter()
-                    .rev()
-                    .fold(0, |acc, &c| (mul_mod(acc, u, p) + c) % p)
-            });
-            determinant_mod(at, p)
-        })
+        .map(|u| determinant_mod(entries_at(minor, |e| evaluate_mod(e, u, p)), p))
         .collect();
-    let mut coeffs = interpolate_mod(&values, p);
-    while coeffs.last() == Some(&0) {
-        coeffs.pop();
-    }
-    coeffs
+    interpolate_mod(&values, p)
 }
 
 /// The determinant of the square matrix of polynomials over `F_p`, in the ring: by
@@ -921,10 +911,7 @@ fn determinant_of_degree(minor: &[Vec<Vec<BigInt>>], degree: usize) -> IntPoly {
     let mut coeffs = vec![BigInt::zero(); degree + 1];
     let mut p = PRIME;
     while modulus <= needed {
-        let values: Vec<u64> = (0..=degree as u64)
-            .map(|u| determinant_mod(entries_at(minor, |e| evaluate_mod(e, u, p)), p))
-            .collect();
-        let residues = interpolate_mod(&values, p);
+        let residues = determinant_poly_mod(minor, degree, p);
         // x ≡ coeffs mod modulus, x ≡ residue mod p.
         let m_mod_p = big_mod(&modulus, p);
         let inverse = inverse_mod(m_mod_p, p);
@@ -1019,10 +1006,29 @@ fn clear_entry(row: &mut [u64], pivot: &[u64], col: usize, inverse: u64, p: u64)
 }
 
 /// `poly(u)` modulo `p`.
-fn evaluate_mod(poly: &[BigInt], u: u64, p: u64) -> u64 {
+fn evaluate_mod<T: Residue>(poly: &[T], u: u64, p: u64) -> u64 {
     poly.iter()
         .rev()
-        .fold(0, |acc, c| (mul_mod(acc, u, p) + big_mod(c, p)) % p)
+        .fold(0, |acc, c| (mul_mod(acc, u, p) + c.residue(p)) % p)
+}
+
+/// A coefficient of the matrices' polynomials, as a residue modulo `p`.
+trait Residue {
+    /// Its residue in `[0, p)`.
+    fn residue(&self, p: u64) -> u64;
+}
+
+impl Residue for BigInt {
+    fn residue(&self, p: u64) -> u64 {
+        big_mod(self, p)
+    }
+}
+
+/// A residue already reduced modulo `p`.
+impl Residue for u64 {
+    fn residue(&self, _p: u64) -> u64 {
+        *self
+    }
 }
 
 #[cfg(test)]
