@@ -631,7 +631,7 @@ fn positions_degree_hint(
     if dn * dm >= 0 {
         return None;
     }
-    let g = gcd(dn.abs(), dm.abs());
+    let g = num_integer::Integer::gcd(&dn, &dm);
     let (w_x, w_p) = (dm.abs() / g, dn.abs() / g);
     let weight = w_x * n0 + w_p * m0;
     if rest.iter().any(|&(n, m)| w_x * n + w_p * m != weight) {
@@ -667,14 +667,6 @@ fn positions_degree_hint(
          greater weight `W` needs positions degree up to `{up_to}`.",
         w_p * momenta
     )))
-}
-
-/// The greatest common divisor of two integers, `a, b > 0`.
-fn gcd(a: i64, b: i64) -> i64 {
-    match b {
-        0 => a,
-        _ => gcd(b, a % b),
-    }
 }
 
 /// The report of [`search`]: the space, the dimensions by degree, a basis (or, with
