@@ -6,7 +6,8 @@ use crate::render::Format;
 use std::time::Instant;
 
 use brackets::search::{
-    search, Integral, NewIntegrals, SearchOptions, SearchResult, SearchSpace, SearchedLevel,
+    fix_parameters, search, Integral, NewIntegrals, SearchOptions, SearchResult, SearchSpace,
+    SearchedLevel,
 };
 use brackets::{EngineError, System};
 use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, Vars};
@@ -597,16 +598,11 @@ fn positions_degree_hint(
     if !kinds.iter().all(phase_or_parameter) {
         return None;
     }
-    let mut h = match &options.condition {
+    let h = match &options.condition {
         Some(c) => c.apply(system.hamiltonian()).ok()?,
         None => system.hamiltonian().clone(),
     };
-    let fixed: Vec<(Var, Expr)> = (r.parameters.iter())
-        .map(|(v, value)| (*v, Expr::constant(vars, value.clone().into())))
-        .collect();
-    if !fixed.is_empty() {
-        h = h.subst_many(&fixed).ok()?;
-    }
+    let h = fix_parameters(&h, &r.parameters).ok()?;
     // Each term's degrees (positions, momenta); a constant moves nothing.
     let mut degrees: Vec<(i64, i64)> = Vec::new();
     for t in h.terms() {
