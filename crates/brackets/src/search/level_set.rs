@@ -546,19 +546,14 @@ fn with_parameters(p: &Expr, order: &DivisionOrder) -> DivisionOrder {
     DivisionOrder::graded_lex(&variables)
 }
 
-/// Whether the flow of `H`, its parameters free, keeps the level set of `p` (whose leading
-/// coefficient is a number): `{P, H}` is `P` times a polynomial. A bracket with a negative
-/// power, which division does not take, is not shown kept.
-fn kept_for_every_value(
-    system: &System,
-    p: &Expr,
-    order: &DivisionOrder,
-) -> Result<bool, EngineError> {
-    let flow = system.bracket(p, system.hamiltonian())?;
-    if negative_power(&flow, order).is_some() {
+/// Whether `flow`, `{P, H}` with the parameters free, is `P` times a polynomial (`p`'s
+/// leading coefficient a number): the flow of `H` keeps the level set for every value. A
+/// bracket with a negative power, which division does not take, is not shown a multiple.
+fn flow_is_multiple(flow: &Expr, p: &Expr, order: &DivisionOrder) -> Result<bool, EngineError> {
+    if negative_power(flow, order).is_some() {
         return Ok(false);
     }
-    Ok(p_divide(&flow, p, order)?.remainder.is_zero())
+    Ok(p_divide(flow, p, order)?.remainder.is_zero())
 }
 
 /// What [`LevelSet::check_square_free_and_kept`] checks a level set for, which says where the
@@ -785,6 +780,10 @@ pub(super) struct OnLevel {
     /// values alone (`p_x` on `p_y = 0` of `p_x²/2 + p_y²/2 + xy p_y + ay` at `a = 0`, where
     /// `{p_x, H} = −y p_y` for every `a`, but the flow leaves `p_y = 0` at `a ≠ 0`).
     pub(super) symbolic: Option<Expr>,
+    /// Whether the flow keeps the level set for every value of the parameters: where
+    /// [`OnLevel::symbolic`] is given, or where `{P, H}` is zero (`H = E`, whose leading
+    /// coefficient `1/(2M)` is no number).
+    pub(super) kept_for_every_value: bool,
     pub(super) order: DivisionOrder,
     /// The exponents of `LM(P)` at the fixed values.
     pub(super) lead: Vec<i64>,
@@ -799,15 +798,18 @@ impl OnLevel {
     ) -> Result<Self, EngineError> {
         let order = LevelSet::order(system);
         let p = level.polynomial()?;
+        let flow = system.bracket(&p, system.hamiltonian())?;
         let symbolic = match p.leading_term(&order) {
-            Ok(_) if kept_for_every_value(system, &p, &order)? => Some(p.clone()),
+            Ok(_) if flow_is_multiple(&flow, &p, &order)? => Some(p.clone()),
             _ => None,
         };
+        let kept_for_every_value = symbolic.is_some() || flow.is_zero();
         let fixed = fix_parameters(&p, parameters)?;
         let (_, lead) = fixed.leading_term(&order).map_err(|e| refusal(&fixed, e))?;
         Ok(OnLevel {
             fixed,
             symbolic,
+            kept_for_every_value,
             order,
             lead,
         })

@@ -346,16 +346,12 @@ fn fixed_search_problem(
                 system.vars(),
                 [(trigpoly::GaussianRational::from(1), at.lead.clone())],
             )?;
-            // Kept for every value where `P` divides its flow with the parameters free, or
-            // where the flow is zero (`H = E`, whose leading coefficient `1/(2M)` is no number).
-            let polynomial = level.polynomial()?;
-            let kept_for_every_value = at.symbolic.is_some()
-                || (system.bracket(&polynomial, system.hamiltonian())?).is_zero();
+            let kept_for_every_value = at.kept_for_every_value;
             let (problem, left_out, normal_form_outside) = problem.restricted_to(at)?;
             let searched = SearchedLevel {
                 kept_for_every_value,
                 level: level.clone(),
-                polynomial,
+                polynomial: level.polynomial()?,
                 leading_monomial,
                 left_out,
                 normal_form_outside,
