@@ -135,22 +135,25 @@ pub fn exceptional_values_report(
     entries.push(Entry::Text(match (&unexamined, real_roots) {
         (Some(p), Some(real)) => {
             let shown = unexamined_shown(p, found.unexamined.degree().unwrap_or(0), whole, caller);
-            let left = match real {
-                0 => format!(
-                    "The determinants' other roots, those of {shown}, are none of them real: no \
-                     other real value of `{t}` has more integrals in this space (the complex ones \
-                     were not examined)."
+            // "The determinants' other" said once: the left part says it where none is real.
+            let (left, rest) = match real {
+                0 => (
+                    format!(
+                        "The determinants' other roots, those of {shown}, are none of them real: \
+                         no other real value of `{t}` has more integrals in this space (the \
+                         complex ones were not examined)."
+                    ),
+                    "The remaining",
                 ),
-                real => format!(
-                    "Other values may lie among the roots of {shown}, which are not rational \
-                     ({real} of them real): at each, every minor tried of some block vanishes, so \
-                     that it may hold more integrals (not examined: they are not rational)."
+                real => (
+                    format!(
+                        "Other values may lie among the roots of {shown}, which are not rational \
+                         ({real} of them real): at each, every minor tried of some block \
+                         vanishes, so that it may hold more integrals (not examined: they are \
+                         not rational)."
+                    ),
+                    "The determinants' other",
                 ),
-            };
-            // "The determinants' other" said once: the left part said it where none is real.
-            let rest = match real {
-                0 => "The remaining",
-                _ => "The determinants' other",
             };
             match &ruled_out_roots {
                 Some(roots) => format!(
