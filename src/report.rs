@@ -242,6 +242,9 @@ pub struct RuledOutFacts {
     pub real_roots: usize,
     /// The prime modulo which the blocks' minors were taken.
     pub prime: Option<u64>,
+    /// How many blocks were settled by exact determinants over Q, where a root stayed common
+    /// to their minors modulo [`RuledOutFacts::prime`], rather than modulo it alone.
+    pub exact_blocks: usize,
 }
 
 /// A value of the parameter searched at, the dimension of the space of integrals there and
@@ -487,6 +490,10 @@ pub struct Equation {
     /// every value of the parameters
     /// ([`LoadedSystem::written_in_functions`](crate::system_file::LoadedSystem::written_in_functions)).
     pub in_functions: Option<Expr>,
+    /// Where `in_functions` holds when that is only at the fixed parameter values (a
+    /// search's integral not lifted back to the parameters, or its amplitude): the condition
+    /// with those values, in ASCII (`a = 12, b = 16`); `None` where it holds for every value.
+    pub in_functions_holds_at: Option<String>,
     /// The right side as the factor its terms share times what is left, `F(x p_x + y p_y)/M`
     /// ([`Expr::factored`]), where `bracket` or `expand` shows it: for a result with no form in
     /// the named functions.
@@ -500,6 +507,7 @@ impl Equation {
             lhs: lhs.to_string(),
             rhs,
             in_functions: None,
+            in_functions_holds_at: None,
             factored: None,
         }
     }

@@ -896,7 +896,7 @@ fn find_values(
         searched.push((value.clone(), at));
         Ok(r)
     })?;
-    let shown = std::iter::once((&found.generic_value, &found.generic))
+    let shown = std::iter::once((&found.determinants.generic_value, &found.generic))
         .chain(found.values.iter().map(|v| (&v.value, &v.found)));
     let mut searches = Vec::new();
     for (value, r) in shown {

@@ -31,16 +31,17 @@ pub fn exceptional_values_report(
     (facts, whole): (bool, bool),
 ) -> Report {
     let vars = system.vars();
+    let told = &found.determinants;
     // A value as the prose prints numbers, with a minus sign.
     let shown = |v: &trigpoly::Rational| v.to_string().replace('-', "−");
-    let t = vars.variable(found.parameter).unicode().to_string();
+    let t = vars.variable(told.parameter).unicode().to_string();
     let mut entries = vec![Entry::Text(format!(
         "The equations `{{Σ c_j φ_j, H}} = 0` with `{t}` kept are `M({t}) c = 0`, each entry of \
          `M` a polynomial in `{t}`; their rank drops, and the space holds more integrals, only \
          at a root of the determinant of a generic minor of each block of `M` (the largest has {}, \
          its determinant of degree {} in `{t}`). Each rational root was searched at exactly.",
-        counted(found.largest_minor.0, "row"),
-        found.largest_minor.1
+        counted(told.largest_minor.0, "row"),
+        told.largest_minor.1
     ))];
     // On a level set, the values are its own: say so before them, as the title does.
     let on = (found.generic.on.as_ref())
@@ -72,7 +73,7 @@ pub fn exceptional_values_report(
     };
     entries.push(Entry::Text(format!(
         "For a generic `{t}` (searched at `{t} = {}`, no root): {}.",
-        shown(&found.generic_value),
+        shown(&told.generic_value),
         dimension(0, &found.generic)
     )));
     let values: Vec<String> = (found.values.iter().enumerate())
@@ -98,18 +99,18 @@ pub fn exceptional_values_report(
         )));
     }
     // Said only where 0 was a root: elsewhere it would explain a value nobody was shown.
-    if found.zero_left_out {
+    if told.zero_left_out {
         entries.push(Entry::Text(format!(
             "`{t} = 0`, a root of the determinants, is no value: H, with a negative power of \
              `{t}`, has none there (each equation was multiplied by the power of `{t}` that \
              makes it a polynomial, which changes its solutions at no other value)."
         )));
     }
-    let unexamined = found.unexamined_in(vars);
+    let unexamined = told.unexamined_in(vars);
     let real_roots = unexamined
         .as_ref()
-        .map(|_| found.unexamined.real_root_count());
-    let ruled_out = &found.ruled_out;
+        .map(|_| told.unexamined.real_root_count());
+    let ruled_out = &told.ruled_out;
     let ruled_out_real = (ruled_out.count() > 0).then(|| ruled_out.factor.real_root_count());
     // How the blocks were shown to keep their rank: modulo the prime, and some, where a root
     // stayed common modulo it, by exact determinants.
@@ -134,7 +135,7 @@ pub fn exceptional_values_report(
     });
     entries.push(Entry::Text(match (&unexamined, real_roots) {
         (Some(p), Some(real)) => {
-            let shown = unexamined_shown(p, found.unexamined.degree().unwrap_or(0), whole, caller);
+            let shown = unexamined_shown(p, told.unexamined.degree().unwrap_or(0), whole, caller);
             // "The determinants' other" said once: the left part says it where none is real.
             let (left, rest) = match real {
                 0 => (
@@ -178,23 +179,24 @@ pub fn exceptional_values_report(
         };
         entries.push(Entry::Data(Facts::ExceptionalValues(
             ExceptionalFacts::new(
-                vars.variable(found.parameter).name().to_string(),
-                value(0, &found.generic_value, &found.generic),
+                vars.variable(told.parameter).name().to_string(),
+                value(0, &told.generic_value, &found.generic),
                 (found.values.iter().enumerate())
                     .map(|(k, v)| value(k + 1, &v.value, &v.found))
                     .collect(),
                 found.spurious.iter().map(ToString::to_string).collect(),
                 (unexamined.as_ref().zip(real_roots))
                     .map(|(p, real)| (p.render(Style::Ascii), real)),
-                found.largest_minor,
-                found.zero_left_out,
+                told.largest_minor,
+                told.zero_left_out,
             )
             .with_ruled_out(ruled_out_real.map(|real| RuledOutFacts {
                 polynomial:
-                    (found.ruled_out_in(vars)).map_or(String::new(), |p| p.render(Style::Ascii)),
+                    (told.ruled_out_in(vars)).map_or(String::new(), |p| p.render(Style::Ascii)),
                 roots: ruled_out.count(),
                 real_roots: real,
                 prime: ruled_out.prime,
+                exact_blocks: ruled_out.exact_blocks,
             })),
         )));
     }
@@ -211,7 +213,7 @@ pub fn exceptional_values_report(
         names: first,
     }];
     let mut seconds = 0.0;
-    let at_values = std::iter::once(format!("`{t} = {}` (generic)", shown(&found.generic_value)))
+    let at_values = std::iter::once(format!("`{t} = {}` (generic)", shown(&told.generic_value)))
         .chain(
             found
                 .values

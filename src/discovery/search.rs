@@ -1178,26 +1178,37 @@ impl Shared {
         let unlifted: Vec<bool> = (self.shown.iter())
             .map(|&i| r.for_every_value(i).is_none())
             .collect();
-        let at_fixed = restate.and_then(|f| f.at_fixed_values(r, &self.held.at(true)?.0));
+        // That condition, and as superint reads it back, for JSON's `holds_at`.
+        let at_fixed = restate.and_then(|f| {
+            let (text, ascii) = self.held.at(true)?;
+            Some((f.at_fixed_values(r, &text)?, ascii))
+        });
         let restated = (restate.map(|f| {
             f.restated(
                 &written,
                 &unlifted,
-                at_fixed.as_ref(),
+                at_fixed.as_ref().map(|(c, _)| c),
                 LoadedSystem::integrals_in_functions_and_instances,
             )
         }))
         .unwrap_or_default();
-        entries.push(self.shown_equations(r, &written, &restated));
+        // Where each restatement holds when only at the fixed values.
+        let holds_at: Vec<Option<String>> = (unlifted.iter().zip(&restated))
+            .map(|(&u, w)| match (&at_fixed, u && w.is_some()) {
+                (Some((_, ascii)), true) => Some(ascii.clone()),
+                _ => None,
+            })
+            .collect();
+        entries.push(self.shown_equations(r, &written, &restated, &holds_at));
         let (complex, amplitudes_at_fixed) = match self.complex_forms(r, restate, at_fixed.as_ref())
         {
             Some((entry, labels)) => (Some(entry), labels),
             None => (None, Vec::new()),
         };
         entries.extend(complex);
-        let at_fixed_labels: Vec<String> = (self.shown.iter().zip(&unlifted).zip(&restated))
-            .filter(|((_, &u), w)| u && at_fixed.is_some() && w.is_some())
-            .map(|((&i, _), _)| self.label(i))
+        let at_fixed_labels: Vec<String> = (self.shown.iter().zip(&holds_at))
+            .filter(|(_, at)| at.is_some())
+            .map(|(&i, _)| self.label(i))
             .chain(amplitudes_at_fixed)
             .collect();
         entries.extend(self.restated_at_fixed_note(&at_fixed_labels));
@@ -1268,6 +1279,7 @@ impl Shared {
         r: &SearchResult,
         written: &[Expr],
         restated: &[Option<Expr>],
+        holds_at: &[Option<String>],
     ) -> Entry {
         if self.shown.is_empty() {
             // Only --new-only shows none: every space holds the constant 1 (each of its
@@ -1302,6 +1314,7 @@ impl Shared {
                     };
                     Equation {
                         in_functions: restated.get(k).cloned().flatten(),
+                        in_functions_holds_at: holds_at.get(k).cloned().flatten(),
                         ..Equation::new(&label, w.clone())
                     }
                 })
@@ -1392,13 +1405,14 @@ impl Shared {
     /// The shown integrals of trigonometric order `k > 0` as `I = Re(A e^{−ikθ})`, when the
     /// system has one angle and some has such a form, each amplitude `A` restated by
     /// `restate` below it where one is given and it has a form (`= Z_y`), that of an
-    /// integral not lifted at `at_fixed` ([`Restate::at_fixed_values`]); with the labels of
-    /// those restated there.
+    /// integral not lifted at `at_fixed` ([`Restate::at_fixed_values`], with how it reads
+    /// back, which its line's `in_functions_holds_at` then says); with the labels of those
+    /// restated there.
     fn complex_forms(
         &self,
         r: &SearchResult,
         restate: Option<&Restate<'_>>,
-        at_fixed: Option<&brackets::Condition>,
+        at_fixed: Option<&(brackets::Condition, String)>,
     ) -> Option<(Entry, Vec<String>)> {
         let k = order_letter(&r.vars);
         // Each line with its amplitude's label (`A3`) and whether its integral is not lifted.
@@ -1423,12 +1437,13 @@ impl Shared {
             let written = restate.restated(
                 &amplitudes,
                 &unlifted,
-                at_fixed,
+                at_fixed.map(|(c, _)| c),
                 LoadedSystem::amplitudes_in_functions,
             );
             for ((line, written), (amplitude, u)) in lines.iter_mut().zip(written).zip(&shown) {
-                if *u && at_fixed.is_some() && written.is_some() {
+                if let (Some((_, ascii)), true) = (at_fixed, *u && written.is_some()) {
                     at_fixed_labels.push(amplitude.clone());
+                    line.in_functions_holds_at = Some(ascii.clone());
                 }
                 line.in_functions = written;
             }

@@ -61,7 +61,11 @@
 //!                          shows, at those that are integrals there: "-8*Q_1_2"; under each
 //!                          amplitude of its complex forms, in the functions alone: "i*Zy";
 //!                          as the text writes it, with the factor its terms share:
-//!                          "-(2*omega - 3*Omega)*Q_2_3"),
+//!                          "-(2*omega - 3*Omega)*Q_2_3"; and "holds_at": ascii (the
+//!                          condition with the fixed parameter values, `a = 12, b = 16`)
+//!                          only on the restatement of an integral a search did not lift
+//!                          back to the parameters it fixed: proved at those values alone,
+//!                          not for every value),
 //!                 "factored": { "text", "ascii", "latex" } | null   (the right side as the
 //!                          factor its terms share times the rest, where `bracket` or `expand`
 //!                          finds one: "F*(x*p_x + y*p_y)/M") } ],
@@ -138,6 +142,10 @@
 //!                   "ruled_out_real_roots": int (how many of them are real),
 //!                   "ruled_out_prime": int | null (the prime modulo which the minors were
 //!                   taken, null when none was ruled out),
+//!                   "ruled_out_exact_blocks": int (how many blocks were shown to keep their
+//!                   rank by exact determinants over Q, where a root stayed common to their
+//!                   minors modulo the prime, rather than modulo it alone; 0 when none was
+//!                   ruled out),
 //!                   "largest_minor": { "size", "degree" }, "zero_left_out": bool (0, a root,
 //!                   left out: H has a negative power of the parameter and no value there) } ]
 //!                   (only for `search --find-values`)
@@ -371,7 +379,12 @@ fn equations(eq: &Equations, section: u32) -> Value {
             let mut v = expr(&l.rhs);
             let line = v.as_object_mut().expect("an object");
             line.insert("lhs".into(), json!(l.lhs));
-            line.insert("in_functions".into(), l.in_functions.as_ref().map_or(Value::Null, in_functions));
+            let mut restated = l.in_functions.as_ref().map_or(Value::Null, in_functions);
+            // Only on a restatement at the fixed values, so that the others are as they were.
+            if let (Some(at), Some(r)) = (&l.in_functions_holds_at, restated.as_object_mut()) {
+                r.insert("holds_at".into(), json!(at));
+            }
+            line.insert("in_functions".into(), restated);
             line.insert("factored".into(), l.factored.as_ref().map_or(Value::Null, factored));
             v
         }).collect::<Vec<_>>(),
@@ -637,6 +650,7 @@ fn exceptional_values(f: &ExceptionalFacts, section: u32) -> Value {
         "ruled_out_roots": f.ruled_out.as_ref().map_or(0, |r| r.roots),
         "ruled_out_real_roots": f.ruled_out.as_ref().map_or(0, |r| r.real_roots),
         "ruled_out_prime": f.ruled_out.as_ref().and_then(|r| r.prime),
+        "ruled_out_exact_blocks": f.ruled_out.as_ref().map_or(0, |r| r.exact_blocks),
         "largest_minor": { "size": f.largest_minor.0, "degree": f.largest_minor.1 },
         "zero_left_out": f.zero_left_out,
     })

@@ -6914,6 +6914,79 @@ fn search_at_fixed_values_restates_there_only_what_is_not_lifted() {
     );
 }
 
+/// In JSON, a restatement of an integral not lifted back to the parameters fixed with `--fix`
+/// says where it holds, `"holds_at"`, as the text's "Restated at … (not lifted)" does: the
+/// quartic potentials' `I2 = 2 H` and `I3 = P` at `a = 12, b = 16`; under `H = p²/2 + ay` at
+/// `a = 0`, `x p_y − y p_x = M` there alone, while `p_x = L`, lifted, holds for every value
+/// and carries no such field.
+#[test]
+fn json_says_where_a_restatement_of_an_integral_not_lifted_holds() {
+    // The lines' form in the functions and where it holds, by label.
+    let restated = |json: &serde_json::Value| -> Vec<(String, serde_json::Value)> {
+        (json["equations"].as_array().expect("equations").iter())
+            .flat_map(|e| e["lines"].as_array().expect("lines").clone())
+            .filter(|l| !l["in_functions"].is_null())
+            .map(|l| {
+                (
+                    l["lhs"].as_str().unwrap().to_string(),
+                    l["in_functions"].clone(),
+                )
+            })
+            .collect()
+    };
+    let quartic = crate::superint_json(&[
+        "search",
+        "systems/quartic-potentials.toml",
+        "--fix",
+        "a=12,b=16",
+        "--momenta-degree",
+        "2",
+        "--positions-degree",
+        "5",
+        "--trig-degree",
+        "0",
+    ]);
+    let forms = restated(&quartic);
+    let labels: Vec<&str> = forms.iter().map(|(l, _)| l.as_str()).collect();
+    assert_eq!(labels, ["I2", "I3"], "{quartic}");
+    assert_eq!(forms[0].1["ascii"], "2*H");
+    for (label, form) in &forms {
+        assert_eq!(form["holds_at"], "a = 12, b = 16", "{label}: {form}");
+    }
+    let text = "name = \"fall\"\nhamiltonian = \"p_x^2/2 + p_y^2/2 + a*y\"\n\
+        [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\"]\n\
+        [[function]]\nname = \"L\"\nvalue = \"p_x\"\n\
+        [[function]]\nname = \"M\"\nvalue = \"x*p_y - y*p_x + a*x\"\n";
+    let file = crate::scratch_text("discovery", "fall-restated.toml", text);
+    let fall = crate::superint_json(&[
+        "search",
+        file.to_str().expect("a UTF-8 path"),
+        "--fix",
+        "a=0",
+        "--momenta-degree",
+        "1",
+        "--positions-degree",
+        "1",
+    ]);
+    let forms = restated(&fall);
+    let at: Vec<(&str, &str, Option<&str>)> = (forms.iter())
+        .map(|(l, f)| {
+            (
+                l.as_str(),
+                f["ascii"].as_str().unwrap(),
+                f["holds_at"].as_str(),
+            )
+        })
+        .collect();
+    assert_eq!(
+        at,
+        [("I3", "L", None), ("I4", "M", Some("a = 0"))],
+        "{fall}"
+    );
+    // The lifted one has no such field at all, not a null one.
+    assert!(forms[0].1.get("holds_at").is_none(), "{fall}");
+}
+
 /// A search that finds only the powers of `H` says which positions degree would hold every
 /// weighted-homogeneous integral of its momenta degree whose weight is that of its momenta
 /// alone, where `H` is weighted-homogeneous: the

@@ -166,6 +166,8 @@ fn an_irrational_value_is_reported_with_its_polynomial_not_claimed() {
     assert_eq!(found["ruled_out_roots"], 6);
     assert_eq!(found["ruled_out_real_roots"], 6);
     assert!(found["ruled_out_prime"].is_u64());
+    // The one block the text says was settled by exact determinants over Q.
+    assert_eq!(found["ruled_out_exact_blocks"], 1);
     assert_eq!(found["zero_left_out"], false);
 }
 
@@ -282,6 +284,8 @@ fn the_anisotropic_oscillators_irrational_roots_are_all_ruled_out() {
     assert_eq!(found["ruled_out_real_roots"], 34);
     let ascii = found["ruled_out"].as_str().expect("the polynomial");
     assert!(ascii.contains("a^34"), "{ascii}");
+    // As the text: every block modulo the prime, none by exact determinants.
+    assert_eq!(found["ruled_out_exact_blocks"], 0);
 }
 
 #[test]
@@ -859,4 +863,6 @@ fn an_unexamined_factor_with_no_real_root_is_said_so_once_with_what_was_ruled_ou
     assert_eq!(found["unexamined_real_roots"], 0);
     assert_eq!(found["ruled_out"], "2*a^4 - a^2 - 6");
     assert_eq!(found["ruled_out_real_roots"], 2);
+    // The two blocks the text says were settled by exact determinants over Q.
+    assert_eq!(found["ruled_out_exact_blocks"], 2);
 }

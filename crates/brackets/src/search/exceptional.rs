@@ -41,8 +41,8 @@
 //! argument above rules out its roots for this block). Outside
 //! it the block keeps its rank, since one of those minors is nonzero there; at its roots every
 //! minor tried vanishes, evidence of a lost rank but no proof. The lcm of these over the
-//! blocks is reported as not examined ([`ExceptionalValues::unexamined`]), `g` divided by it
-//! as ruled out ([`ExceptionalValues::ruled_out`]).
+//! blocks is reported as not examined ([`Determinants::unexamined`]), `g` divided by it
+//! as ruled out ([`Determinants::ruled_out`]).
 //!
 //! The work is split in two: [`exceptional_candidates`] finds the roots and a generic value
 //! ([`Candidates`]), and [`Candidates::confirm`] searches at each with a search it is given
@@ -103,24 +103,36 @@ use super::{
     SearchResult,
 };
 
-/// What [`exceptional_values`] found.
+/// What [`exceptional_values`] found: what the determinants told, and the search at the
+/// generic value and at each of their rational roots.
 #[derive(Debug)]
 pub struct ExceptionalValues {
-    /// The parameter solved for.
-    pub parameter: Var,
-    /// A generic value: no root of any block's determinant.
-    pub generic_value: Rational,
-    /// The ordinary search at it.
+    /// The parameter, the generic value, and the roots not rational, ruled out or not
+    /// examined.
+    pub determinants: Determinants,
+    /// The ordinary search at [`Determinants::generic_value`].
     pub generic: SearchResult,
     /// The rational values where the space holds more integrals, increasing, each with the
     /// ordinary search there.
     pub values: Vec<ExceptionalValue>,
     /// The rational roots of the determinants where the search found no more integrals.
     pub spurious: Vec<Rational>,
+}
+
+/// What the determinants of the blocks' generic minors told about one parameter, but their
+/// rational roots: a value that is no root, and their other roots, ruled out or not examined
+/// (the module docs say how). Held by [`Candidates`], beside the rational roots, and by
+/// [`ExceptionalValues`], beside the searches at them.
+#[derive(Debug)]
+pub struct Determinants {
+    /// The parameter solved for.
+    pub parameter: Var,
+    /// A generic value: no root of any block's determinant.
+    pub generic_value: Rational,
     /// The factor of the determinants' irrational part whose roots were not ruled out, a
     /// constant when none is left: at each of its roots every minor tried vanishes, so that
     /// they may hold more integrals, not examined since they are not rational
-    /// ([`ExceptionalValues::unexamined_in`] writes it in the parameter).
+    /// ([`Determinants::unexamined_in`] writes it in the parameter).
     pub unexamined: IntPoly,
     /// The factor of the determinants' irrational part whose roots were ruled out: at each,
     /// every block keeps its generic rank, so that none holds more integrals in this space.
@@ -132,8 +144,8 @@ pub struct ExceptionalValues {
     pub zero_left_out: bool,
 }
 
-impl ExceptionalValues {
-    /// [`ExceptionalValues::unexamined`] as a polynomial in the parameter, in `vars` (the
+impl Determinants {
+    /// [`Determinants::unexamined`] as a polynomial in the parameter, in `vars` (the
     /// system's), when it is not constant: `None` when every root was rational.
     pub fn unexamined_in(&self, vars: &Vars) -> Option<Expr> {
         (self.unexamined.degree().unwrap_or(0) > 0)
@@ -153,7 +165,7 @@ impl ExceptionalValues {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct RuledOut {
     /// The factor whose roots were ruled out (primitive), a constant when none was: the
-    /// determinants' irrational part is its product with [`ExceptionalValues::unexamined`].
+    /// determinants' irrational part is its product with [`Determinants::unexamined`].
     pub factor: IntPoly,
     /// The prime modulo which the minors were taken, when any root was examined: where a
     /// block's minors leave no common root with the irrational part modulo it, that block
@@ -191,25 +203,15 @@ pub struct ExceptionalValue {
 }
 
 /// The candidates for the exceptional values, before any search at them
-/// ([`exceptional_candidates`]): the determinants' rational roots, a generic value, and what
-/// was not examined. [`Candidates::confirm`] searches at each.
+/// ([`exceptional_candidates`]): the determinants' rational roots, beside what else they
+/// told. [`Candidates::confirm`] searches at each.
 #[derive(Debug)]
 pub struct Candidates {
-    /// The parameter solved for.
-    pub parameter: Var,
-    /// A generic value: no root of any block's determinant.
-    pub generic_value: Rational,
+    /// The parameter, a generic value, and the roots not rational, ruled out or not examined.
+    pub determinants: Determinants,
     /// The rational roots of the determinants, increasing (without `0` where `H` has no
     /// value there).
     pub roots: Vec<Rational>,
-    /// As [`ExceptionalValues::unexamined`].
-    pub unexamined: IntPoly,
-    /// As [`ExceptionalValues::ruled_out`].
-    pub ruled_out: RuledOut,
-    /// As [`ExceptionalValues::largest_minor`].
-    pub largest_minor: (usize, usize),
-    /// As [`ExceptionalValues::zero_left_out`].
-    pub zero_left_out: bool,
 }
 
 impl Candidates {
@@ -240,7 +242,7 @@ impl Candidates {
     ///     search(&oscillator, &options.clone().fix(a, value.clone()))
     /// })?;
     /// // The generic value first, then each root once.
-    /// assert_eq!(searched[0], found.generic_value.to_string());
+    /// assert_eq!(searched[0], found.determinants.generic_value.to_string());
     /// assert_eq!(searched.len(), 1 + found.values.len() + found.spurious.len());
     /// let values: Vec<String> = found.values.iter().map(|v| v.value.to_string()).collect();
     /// assert_eq!(values, ["0", "1"]);
@@ -250,7 +252,7 @@ impl Candidates {
         self,
         mut search_at: impl FnMut(&Rational) -> Result<SearchResult, E>,
     ) -> Result<ExceptionalValues, E> {
-        let generic = search_at(&self.generic_value)?;
+        let generic = search_at(&self.determinants.generic_value)?;
         let mut values = Vec::new();
         let mut spurious = Vec::new();
         for value in self.roots {
@@ -262,15 +264,10 @@ impl Candidates {
             }
         }
         Ok(ExceptionalValues {
-            parameter: self.parameter,
-            generic_value: self.generic_value,
+            determinants: self.determinants,
             generic,
             values,
             spurious,
-            unexamined: self.unexamined,
-            ruled_out: self.ruled_out,
-            largest_minor: self.largest_minor,
-            zero_left_out: self.zero_left_out,
         })
     }
 }
@@ -379,13 +376,15 @@ pub fn exceptional_candidates(
         _ => (rest, RuledOut::none()),
     };
     Ok(Candidates {
-        parameter,
-        generic_value,
+        determinants: Determinants {
+            parameter,
+            generic_value,
+            unexamined,
+            ruled_out,
+            largest_minor,
+            zero_left_out,
+        },
         roots,
-        unexamined,
-        ruled_out,
-        largest_minor,
-        zero_left_out,
     })
 }
 
@@ -1059,8 +1058,13 @@ mod tests {
         // found, and no irrational root of the determinants left.
         let system = planar("(p_x^2 + p_y^2)/2 + x^4 + a*x^2*y^2 + 8*y^4", &["a"]);
         let found = exceptional_values(&system, &space(2, 5), system.var("a")).unwrap();
-        assert_eq!(found.unexamined.degree(), Some(0));
-        assert_eq!(found.ruled_out.count(), 4, "{:?}", found.ruled_out);
+        assert_eq!(found.determinants.unexamined.degree(), Some(0));
+        assert_eq!(
+            found.determinants.ruled_out.count(),
+            4,
+            "{:?}",
+            found.determinants.ruled_out
+        );
         assert_eq!(values_of(&found), ["0"]);
     }
 
@@ -1108,6 +1112,7 @@ mod tests {
         let c = system.var("C");
         let rows = exceptional_values(&system, &space(2, 4), c)
             .unwrap()
+            .determinants
             .largest_minor
             .0;
         let at_most = |n| exceptional_values(&system, &space(2, 4).max_minor(n), c);
@@ -1118,7 +1123,7 @@ mod tests {
             "{err:?}"
         );
         assert!(err.to_string().contains("raise the limit"), "{err}");
-        assert_eq!(at_most(rows).unwrap().largest_minor.0, rows);
+        assert_eq!(at_most(rows).unwrap().determinants.largest_minor.0, rows);
     }
 
     /// The generic minor is taken from the rows its elimination picked, whatever the order in
@@ -1155,8 +1160,8 @@ mod tests {
         let system = planar("(p_x^2 + p_y^2)/2 + (x^2 + a*y^2)/2", &["a"]);
         let found = exceptional_values(&system, &space(3, 3), system.var("a")).unwrap();
         assert_eq!(values_of(&found), ["0", "1/9", "1/4", "1", "4", "9"]);
-        assert_eq!(found.unexamined.degree(), Some(0));
-        assert!(found.unexamined_in(system.vars()).is_none());
+        assert_eq!(found.determinants.unexamined.degree(), Some(0));
+        assert!(found.determinants.unexamined_in(system.vars()).is_none());
         assert!(!found.spurious.is_empty());
         let generic = found.generic.basis.len();
         let more: Vec<usize> = (found.values.iter())
@@ -1189,18 +1194,21 @@ mod tests {
         // and 3/2 (frequency ratios √2, 2 and √(1/2), no quadratic integral more), ruled out.
         let system = planar("(p_x^2 + p_y^2)/2 + (x^2 + (a^2 - 1)*y^2)/2", &["a"]);
         let found = exceptional_values(&system, &space(2, 2), system.var("a")).unwrap();
-        assert_eq!(found.unexamined, IntPoly::from_i64(&[-2, 0, 1]));
+        assert_eq!(
+            found.determinants.unexamined,
+            IntPoly::from_i64(&[-2, 0, 1])
+        );
         for ruled_out in [[-3, 0, 1], [-5, 0, 1], [-3, 0, 2]] {
-            assert!(IntPoly::from_i64(&ruled_out).divides(&found.ruled_out.factor));
+            assert!(IntPoly::from_i64(&ruled_out).divides(&found.determinants.ruled_out.factor));
         }
-        assert_eq!(found.ruled_out.count(), 6);
-        assert!(found.ruled_out.prime.is_some());
+        assert_eq!(found.determinants.ruled_out.count(), 6);
+        assert!(found.determinants.ruled_out.prime.is_some());
         // Written in a: the same polynomial, its value at a = 3 the IntPoly's.
-        let written = found.unexamined_in(system.vars()).unwrap();
+        let written = found.determinants.unexamined_in(system.vars()).unwrap();
         let three = Expr::constant(system.vars(), 3.into());
         let at_three = written.subst(system.var("a"), &three).unwrap();
-        let value: BigInt =
-            (found.unexamined.coeffs().iter().rev()).fold(BigInt::zero(), |acc, c| acc * 3 + c);
+        let value: BigInt = (found.determinants.unexamined.coeffs().iter().rev())
+            .fold(BigInt::zero(), |acc, c| acc * 3 + c);
         assert_eq!(
             at_three,
             &Expr::constant(system.vars(), 1.into()) * &Rational::from(value)
@@ -1237,7 +1245,7 @@ mod tests {
         // A negative power of a in H: each row made a polynomial, a = 0 no candidate.
         let system = planar("(p_x^2 + p_y^2)/2 + (x^2 + y^2/a)/2", &["a"]);
         let found = exceptional_values(&system, &space(2, 2), system.var("a")).unwrap();
-        assert!(found.zero_left_out);
+        assert!(found.determinants.zero_left_out);
         assert_eq!(values_of(&found), ["1"]);
         assert!(found.spurious.iter().all(|r| !r.is_zero()));
         let at_one = &found.values[0].found;
@@ -1249,7 +1257,7 @@ mod tests {
         // With a itself, a = 0 is one (y free there, p_y an integral) and no negative power.
         let direct = planar("(p_x^2 + p_y^2)/2 + (x^2 + a*y^2)/2", &["a"]);
         let found = exceptional_values(&direct, &space(2, 2), direct.var("a")).unwrap();
-        assert!(!found.zero_left_out);
+        assert!(!found.determinants.zero_left_out);
         assert_eq!(values_of(&found), ["0", "1"]);
     }
 
@@ -1426,11 +1434,11 @@ mod tests {
             exceptional_candidates(&system, &space(2, 2), system.var("a")).unwrap()
         };
         let one_over_a = at("(p_x^2 + p_y^2)/2 + (x^2 + y^2/a)/2");
-        assert!(one_over_a.zero_left_out);
+        assert!(one_over_a.determinants.zero_left_out);
         assert!(one_over_a.roots.iter().all(|r| !r.is_zero()));
         // H/a has H's integrals at every a ≠ 0: each row times a is constant, no root at all.
         let scaled = at("(p_x^2 + p_y^2 + x^2 + y^2)/(2*a)");
-        assert!(!scaled.zero_left_out);
+        assert!(!scaled.determinants.zero_left_out);
         assert!(scaled.roots.is_empty(), "{:?}", scaled.roots);
     }
 }
