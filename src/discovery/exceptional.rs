@@ -165,10 +165,13 @@ pub fn exceptional_values_report(
             }
         }
         _ => match &ruled_out_roots {
+            // "But those above" only where values above have more integrals: where none has,
+            // it would point at the roots that hold nothing more.
             Some(roots) => format!(
                 "The determinants' other {roots} hold no more integrals in this space: at each, \
                  every block of the equations keeps its generic rank ({shown_how}). No value of \
-                 `{t}` but those above has more integrals in this space."
+                 `{t}`{} has more integrals in this space.",
+                if values.is_empty() { "" } else { " but those above" }
             ),
             None => format!("Every root of the determinants is rational: no other value of `{t}` has more integrals in this space."),
         },

@@ -1622,6 +1622,27 @@ fn harmonic_rotor_moments_of_inertia_on_p_theta_one_are_its_resonances() {
     );
 }
 
+/// The dipole rotor (`systems/dipole-rotor.toml`): no frequency `ω` adds an integral at
+/// degree 2 (`ω = 0`, a root, holds nothing more; the complex roots are ruled out), and the
+/// report says so without pointing at values "above" that it never listed.
+#[test]
+fn dipole_rotor_no_frequency_adds_an_integral_at_degree_two() {
+    let out = normalize(&superint_ok_line(
+        "search systems/dipole-rotor.toml --find-values omega --fix M=1,I=1,epsilon=1 \
+         --momenta-degree 2 --positions-degree 2 --trig-degree 2 --no-timings",
+    ));
+    for piece in [
+        "No rational value of ω has more integrals.",
+        "Roots of the determinants where the search finds no more integrals: ω = 0.",
+        "The determinants' other 4 roots (complex, none real) hold no more integrals in \
+         this space: at each, every block of the equations keeps its generic rank",
+        "No value of ω has more integrals in this space.",
+    ] {
+        assert!(out.contains(&normalize(piece)), "no {piece:?} in:\n{out}");
+    }
+    assert!(!out.contains("but those above"), "{out}");
+}
+
 /// The file's integrals hold at their cases and at no neighbour: each claim proved, each
 /// false neighbour refuted with its residual.
 #[test]
