@@ -248,6 +248,21 @@ const COMMANDS: &[(&str, &str)] = &[
          --fix omega=1,M=1 --momenta-degree 2 --positions-degree 2 --trig-degree 2",
     ),
     (
+        "dipole-rotor-search",
+        "superint search systems/dipole-rotor.toml --fix M=2,omega=3,I=5,epsilon=7 \
+         --momenta-degree 4 --positions-degree 4 --trig-degree 4 --new-only",
+    ),
+    (
+        "dipole-rotor-values-omega",
+        "superint search systems/dipole-rotor.toml --find-values omega --fix M=1,I=1,epsilon=1 \
+         --momenta-degree 2 --positions-degree 2 --trig-degree 2",
+    ),
+    (
+        "dipole-rotor-values-epsilon",
+        "superint search systems/dipole-rotor.toml --find-values epsilon --fix M=1,I=1,omega=1 \
+         --momenta-degree 2 --positions-degree 2 --trig-degree 2",
+    ),
+    (
         "kepler",
         "superint search systems/kepler.toml --momenta-degree 2 --positions-degree 2 \
          --trig-degree 1 --laurent",
@@ -1622,25 +1637,80 @@ fn harmonic_rotor_moments_of_inertia_on_p_theta_one_are_its_resonances() {
     );
 }
 
-/// The dipole rotor (`systems/dipole-rotor.toml`): no frequency `ω` adds an integral at
-/// degree 2 (`ω = 0`, a root, holds nothing more; the complex roots are ruled out), and the
-/// report says so without pointing at values "above" that it never listed.
+/// Section 31: the dipole rotor's `J = x p_y − y p_x + p_θ` (the rotation of `x`, `y` and `θ`
+/// together) is conserved, and the orbital and the rotor's momenta, each alone, are not: the
+/// dipole's torque `ε(x sin θ − y cos θ)` moves them, equal and opposite.
 #[test]
-fn dipole_rotor_no_frequency_adds_an_integral_at_degree_two() {
-    let out = normalize(&superint_ok_line(
-        "search systems/dipole-rotor.toml --find-values omega --fix M=1,I=1,epsilon=1 \
-         --momenta-degree 2 --positions-degree 2 --trig-degree 2 --no-timings",
-    ));
+fn dipole_rotor_conserves_j_and_refutes_the_orbital_momentum() {
+    let out = normalize(&superint_ok(&[
+        "check",
+        "systems/dipole-rotor.toml",
+        "--no-timings",
+    ]));
     for piece in [
-        "No rational value of ω has more integrals.",
-        "Roots of the determinants where the search finds no more integrals: ω = 0.",
-        "The determinants' other 4 roots (complex, none real) hold no more integrals in \
-         this space: at each, every block of the equations keeps its generic rank",
-        "No value of ω has more integrals in this space.",
+        "{J, H} = 0 [rotation proved]",
+        "{L, H} = −ε(x sin θ − y cos θ) [torque proved]",
+        "{Z, H} = iω Z − ε e^{iθ} [ladder proved]",
+        "{L, H} = 0 [false-orbital-momentum refuted, as expected] \
+         residual lhs − rhs = εy cos θ − εx sin θ",
+        "{p_θ, H} = 0 [false-rotor-momentum refuted, as expected]",
+        "{Z e^{−iθ}, H} = 0 at p_θ = Iω [false-resonant refuted, as expected] \
+         residual lhs − rhs = −ε",
+        "16 claims in 1 file: 12 proved, 4 refuted; all as expected",
     ] {
         assert!(out.contains(&normalize(piece)), "no {piece:?} in:\n{out}");
     }
+}
+
+/// Section 31: at generic values, every integral of degree ≤ 4 in the momenta and the
+/// positions and of trigonometric order ≤ 4 is a polynomial in `H` and `J`: the space's
+/// dimension is the number of products `H^a J^b` of momenta degree `2a + b ≤ 4`.
+#[test]
+fn dipole_rotor_has_no_integral_but_h_and_j_to_degree_four() {
+    let products = (0..=2).map(|a| 4 - 2 * a + 1).sum::<usize>();
+    expect(
+        "dipole-rotor-search",
+        &[
+            &format!("Dimension of the space of integrals: {products}."),
+            "Known integrals in the space: H, J.",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
+}
+
+/// Section 31: no frequency `ω` adds an integral at degree 2 (`ω = 0`, a root, holds nothing
+/// more; the complex roots are ruled out), and the report says so without pointing at values
+/// "above" that it never listed.
+#[test]
+fn dipole_rotor_no_frequency_adds_an_integral_at_degree_two() {
+    let out = expect(
+        "dipole-rotor-values-omega",
+        &[
+            "For a generic ω (searched at ω = 7, no root): 4 integrals (section 2).",
+            "No rational value of ω has more integrals.",
+            "Roots of the determinants where the search finds no more integrals: ω = 0.",
+            "The determinants' other 4 roots (complex, none real) hold no more integrals in \
+             this space: at each, every block of the equations keeps its generic rank",
+            "No value of ω has more integrals in this space.",
+        ],
+    );
     assert!(!out.contains("but those above"), "{out}");
+}
+
+/// Section 31: the field strength `ε = 0`, the paper's harmonic rotor, is the one value of `ε`
+/// with more integrals at degree 2; the other roots are complex and ruled out.
+#[test]
+fn dipole_rotor_only_zero_field_adds_integrals() {
+    expect(
+        "dipole-rotor-values-epsilon",
+        &[
+            "For a generic ε (searched at ε = 7, no root): 4 integrals (section 2).",
+            "More integrals at ε = 0, 9 integrals (section 4).",
+            "The determinants' other 2 roots (complex, none real) hold no more integrals in \
+             this space",
+            "No value of ε but those above has more integrals in this space.",
+        ],
+    );
 }
 
 /// The file's integrals hold at their cases and at no neighbour: each claim proved, each
