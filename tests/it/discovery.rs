@@ -7005,6 +7005,21 @@ fn search_at_fixed_values_restates_there_only_what_is_not_lifted() {
     );
 }
 
+/// The lines of a search's JSON restated in the file's functions: each line's label (`I2`,
+/// `A7 (k = 1)`) with its `"in_functions"`, where it has one.
+fn restated(json: &serde_json::Value) -> Vec<(String, serde_json::Value)> {
+    (json["equations"].as_array().expect("equations").iter())
+        .flat_map(|e| e["lines"].as_array().expect("lines").clone())
+        .filter(|l| !l["in_functions"].is_null())
+        .map(|l| {
+            (
+                l["lhs"].as_str().expect("a label").to_string(),
+                l["in_functions"].clone(),
+            )
+        })
+        .collect()
+}
+
 /// In JSON, a restatement of an integral not lifted back to the parameters fixed with `--fix`
 /// says where it holds, `"holds_at"`, as the text's "Restated at … (not lifted)" does: the
 /// quartic potentials' `I2 = 2 H` and `I3 = P` at `a = 12, b = 16`; under `H = p²/2 + ay` at
@@ -7012,19 +7027,6 @@ fn search_at_fixed_values_restates_there_only_what_is_not_lifted() {
 /// and carries no such field.
 #[test]
 fn json_says_where_a_restatement_of_an_integral_not_lifted_holds() {
-    // The lines' form in the functions and where it holds, by label.
-    let restated = |json: &serde_json::Value| -> Vec<(String, serde_json::Value)> {
-        (json["equations"].as_array().expect("equations").iter())
-            .flat_map(|e| e["lines"].as_array().expect("lines").clone())
-            .filter(|l| !l["in_functions"].is_null())
-            .map(|l| {
-                (
-                    l["lhs"].as_str().unwrap().to_string(),
-                    l["in_functions"].clone(),
-                )
-            })
-            .collect()
-    };
     let quartic = crate::superint_json(&[
         "search",
         "systems/quartic-potentials.toml",
@@ -7076,6 +7078,50 @@ fn json_says_where_a_restatement_of_an_integral_not_lifted_holds() {
     );
     // The lifted one has no such field at all, not a null one.
     assert!(forms[0].1.get("holds_at").is_none(), "{fall}");
+}
+
+/// `"holds_at"` on the amplitudes of complex forms too, and as `--when` reads it back: the
+/// 3D isotropic rotor at `p_θ = 1` with `M = ω = I = 1` fixed, where `Φ7 = p_y cos θ + y sin θ`
+/// is an integral at the resonance `p_θ/I = ω` alone, so not lifted, and its amplitude
+/// `A7 = p_y + iy` is `Z_y = p_y + iMωy` there only, as `Φ9 = P_{1,1}` is; `Φ2 = L_x`,
+/// lifted, holds for every value. Searched again at `--when` that condition, nothing is fixed, and the same
+/// restatements hold there with no `"holds_at"`. On the level set `p_θ = 1` (`--on`, a
+/// search with no condition) the amplitudes hold at the fixed values alone.
+#[test]
+fn json_says_where_an_amplitude_not_lifted_is_restated_as_when_reads_it_back() {
+    let rotor = |condition: &[&str]| {
+        let args = [
+            &["search", "systems/isotropic-rotor-3d.toml"][..],
+            condition,
+            &["--momenta-degree", "1", "--positions-degree", "1"],
+        ]
+        .concat();
+        restated(&crate::superint_json(&args))
+    };
+    let form = |forms: &[(String, serde_json::Value)], label: &str| {
+        (forms.iter().find(|(l, _)| l.starts_with(label)))
+            .map(|(_, f)| (f["ascii"].clone(), f.get("holds_at").cloned()))
+            .unwrap_or_else(|| panic!("no {label} in {forms:?}"))
+    };
+    let fixed = rotor(&["--when", "p_theta = 1", "--fix", "M=1,I=1,omega=1"]);
+    let (a7, at) = form(&fixed, "A7 (k = 1)");
+    assert_eq!(a7, "Zy");
+    let at = at.expect("A7 restated at the fixed values only");
+    let when = at.as_str().expect("a condition");
+    assert_eq!(when, "p_theta = 1, M = 1, omega = 1, I = 1");
+    assert_eq!(form(&fixed, "Φ9"), ("P_1_1".into(), Some(at.clone())));
+    assert_eq!(form(&fixed, "Φ2"), ("Lx".into(), None));
+    let read_back = rotor(&["--when", when]);
+    for label in ["A7 (k = 1)", "Φ9", "Φ2"] {
+        assert_eq!(form(&read_back, label).1, None, "{label}: {read_back:?}");
+        assert_eq!(form(&read_back, label).0, form(&fixed, label).0, "{label}");
+    }
+    let on = rotor(&["--on", "p_theta = 1", "--fix", "M=1,I=1,omega=1"]);
+    let (a7, at) = form(&on, "A7 (k = 1)");
+    assert_eq!(
+        (a7, at),
+        ("Zy".into(), Some("M = 1, omega = 1, I = 1".into()))
+    );
 }
 
 /// A search that finds only the powers of `H` says which positions degree would hold every

@@ -866,3 +866,60 @@ fn an_unexamined_factor_with_no_real_root_is_said_so_once_with_what_was_ruled_ou
     // The two blocks the text says were settled by exact determinants over Q.
     assert_eq!(found["ruled_out_exact_blocks"], 2);
 }
+
+/// Each value `--find-values` searches at is a `--fix`-style search, and JSON says where a
+/// restatement of one not lifted holds, as its section's text does: the quartic potentials
+/// with `b = 16`, whose generic `a = 7` restates `I2 = 2 H` there alone and `a = 12` its
+/// `I2 = 2 H` and `I3 = P`; at `a = 0`, `I2 = 2 H − 2 H_x`, lifted to `b`, holds at `a = 0` for
+/// every `b` and says nothing more.
+#[test]
+fn find_values_says_where_each_values_restatements_hold() {
+    let json = superint_json(&[
+        "search",
+        "systems/quartic-potentials.toml",
+        "--find-values",
+        "a",
+        "--fix",
+        "b=16",
+        "--momenta-degree",
+        "2",
+        "--positions-degree",
+        "5",
+        "--trig-degree",
+        "0",
+    ]);
+    // Each restated line: its section's title, its label and where it holds.
+    let title = |section: &serde_json::Value| {
+        (json["sections"].as_array().expect("sections").iter())
+            .find(|s| s["number"] == *section)
+            .map_or(String::new(), |s| {
+                s["title"].as_str().unwrap_or("").to_string()
+            })
+    };
+    let restated: Vec<(String, String, Option<String>)> =
+        (json["equations"].as_array().expect("equations").iter())
+            .flat_map(|e| {
+                let title = title(&e["section"]);
+                (e["lines"].as_array().expect("lines").iter())
+                    .filter(|l| !l["in_functions"].is_null())
+                    .map(move |l| {
+                        (
+                            title.clone(),
+                            l["lhs"].as_str().expect("a label").to_string(),
+                            l["in_functions"]["holds_at"].as_str().map(String::from),
+                        )
+                    })
+                    .collect::<Vec<_>>()
+            })
+            .collect();
+    let at = |s: &str| Some(s.to_string());
+    let expected = [
+        ("At a = 7 (generic): Basis", "I2", at("a = 7, b = 16")),
+        ("At a = 0: Basis", "I2", None),
+        ("At a = 0: Basis", "I3", None),
+        ("At a = 12: Basis", "I2", at("a = 12, b = 16")),
+        ("At a = 12: Basis", "I3", at("a = 12, b = 16")),
+    ]
+    .map(|(t, l, h)| (t.to_string(), l.to_string(), h));
+    assert_eq!(restated, expected, "{json}");
+}
