@@ -44,8 +44,10 @@
 //! blocks is reported as not examined ([`Determinants::unexamined`]), `g` divided by it
 //! as ruled out ([`Determinants::ruled_out`]).
 //!
-//! The work is split in two: [`exceptional_candidates`] finds the roots and a generic value
-//! ([`Candidates`]), and [`Candidates::confirm`] searches at each with a search it is given
+//! The work is split in two: [`exceptional_candidates`] finds the rational roots
+//! ([`Candidates`]) beside what else the determinants tell ([`Determinants`]: a generic
+//! value, the other roots ruled out or not examined), and [`Candidates::confirm`] searches at
+//! each with a search it is given
 //! ([`exceptional_values`] gives the ordinary one; `superint search --find-values` its own,
 //! whose reports it shows), so that each value is searched once.
 //!
@@ -103,12 +105,13 @@ use super::{
     SearchResult,
 };
 
-/// What [`exceptional_values`] found: what the determinants told, and the search at the
-/// generic value and at each of their rational roots.
+/// What [`exceptional_values`] found: what the determinants tell ([`Determinants`]), and the
+/// searches at the generic value and at each of their rational roots, split into the
+/// exceptional values and the spurious roots.
 #[derive(Debug)]
 pub struct ExceptionalValues {
-    /// The parameter, the generic value, and the roots not rational, ruled out or not
-    /// examined.
+    /// The parameter, a generic value, and the roots that are not rational, those ruled out
+    /// apart from those not examined.
     pub determinants: Determinants,
     /// The ordinary search at [`Determinants::generic_value`].
     pub generic: SearchResult,
@@ -119,10 +122,11 @@ pub struct ExceptionalValues {
     pub spurious: Vec<Rational>,
 }
 
-/// What the determinants of the blocks' generic minors told about one parameter, but their
-/// rational roots: a value that is no root, and their other roots, ruled out or not examined
-/// (the module docs say how). Held by [`Candidates`], beside the rational roots, and by
-/// [`ExceptionalValues`], beside the searches at them.
+/// What the determinants of the blocks' generic minors tell about one parameter apart from
+/// their rational roots: the parameter, a value that is no root of any, the largest minor,
+/// whether `0` was left out, and their roots that are not rational, split into those ruled
+/// out and those not examined (the module docs say how). [`Candidates`] holds it beside the
+/// rational roots, [`ExceptionalValues`] beside the searches at them.
 #[derive(Debug)]
 pub struct Determinants {
     /// The parameter solved for.
@@ -204,10 +208,12 @@ pub struct ExceptionalValue {
 
 /// The candidates for the exceptional values, before any search at them
 /// ([`exceptional_candidates`]): the determinants' rational roots, beside what else they
-/// told. [`Candidates::confirm`] searches at each.
+/// tell ([`Determinants`]). [`Candidates::confirm`] searches at the generic value and at
+/// each root.
 #[derive(Debug)]
 pub struct Candidates {
-    /// The parameter, a generic value, and the roots not rational, ruled out or not examined.
+    /// The parameter, a generic value, and the roots that are not rational, those ruled out
+    /// apart from those not examined.
     pub determinants: Determinants,
     /// The rational roots of the determinants, increasing (without `0` where `H` has no
     /// value there).
