@@ -488,11 +488,14 @@ pub struct Equation {
     pub rhs: Expr,
     /// The right side as a polynomial in `H` and a system's named functions, proved for
     /// every value of the parameters
-    /// ([`LoadedSystem::written_in_functions`](crate::system_file::LoadedSystem::written_in_functions)).
+    /// ([`LoadedSystem::written_in_functions`](crate::system_file::LoadedSystem::written_in_functions)),
+    /// or at the fixed values alone where [`Equation::in_functions_holds_at`] says so.
     pub in_functions: Option<Expr>,
     /// Where `in_functions` holds when that is only at the fixed parameter values (a
-    /// search's integral not lifted back to the parameters, or its amplitude): the condition
-    /// with those values, in ASCII (`a = 12, b = 16`); `None` where it holds for every value.
+    /// search's integral not lifted back to the parameters, or its amplitude): the search's
+    /// condition, where it has one, then those values, as `--when` reads it back and as the
+    /// integral's claim's condition is written (`p_theta = 1, M = 1, omega = 1, I = 1`);
+    /// `None` where it holds at the condition for every value.
     pub in_functions_holds_at: Option<String>,
     /// The right side as the factor its terms share times what is left, `F(x p_x + y p_y)/M`
     /// ([`Expr::factored`]), where `bracket` or `expand` shows it: for a result with no form in

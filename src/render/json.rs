@@ -61,11 +61,13 @@
 //!                          shows, at those that are integrals there: "-8*Q_1_2"; under each
 //!                          amplitude of its complex forms, in the functions alone: "i*Zy";
 //!                          as the text writes it, with the factor its terms share:
-//!                          "-(2*omega - 3*Omega)*Q_2_3"; and "holds_at": ascii (the
-//!                          condition with the fixed parameter values, `a = 12, b = 16`)
-//!                          only on the restatement of an integral a search did not lift
-//!                          back to the parameters it fixed: proved at those values alone,
-//!                          not for every value),
+//!                          "-(2*omega - 3*Omega)*Q_2_3"; and "holds_at": ascii, only on
+//!                          the restatement of an integral a search did not lift back to
+//!                          the parameters it fixed, or of its amplitude: where it is proved,
+//!                          at those values alone, the `--when` condition first where there
+//!                          is one, "p_theta = 1, M = 1, omega = 1, I = 1", as the integral's
+//!                          claim's "condition_ascii" and `--when` read it; absent where the
+//!                          restatement holds at the condition for every value),
 //!                 "factored": { "text", "ascii", "latex" } | null   (the right side as the
 //!                          factor its terms share times the rest, where `bracket` or `expand`
 //!                          finds one: "F*(x*p_x + y*p_y)/M") } ],
