@@ -2,7 +2,9 @@
 //! integrals, in every format, and what it refuses.
 
 use crate::cli::compile_within;
-use crate::{normalize, scratch_text, superint_json, superint_ok, superint_refused};
+use crate::{
+    normalize, scratch_text, superint_json, superint_ok, superint_ok_line, superint_refused,
+};
 
 const HENON_HEILES: &str = "systems/henon-heiles.toml";
 
@@ -874,20 +876,12 @@ fn an_unexamined_factor_with_no_real_root_is_said_so_once_with_what_was_ruled_ou
 /// every `b` and says nothing more.
 #[test]
 fn find_values_says_where_each_values_restatements_hold() {
-    let json = superint_json(&[
-        "search",
-        "systems/quartic-potentials.toml",
-        "--find-values",
-        "a",
-        "--fix",
-        "b=16",
-        "--momenta-degree",
-        "2",
-        "--positions-degree",
-        "5",
-        "--trig-degree",
-        "0",
-    ]);
+    // As docs/system-files.md's JSON section runs it.
+    let json: serde_json::Value = serde_json::from_str(&superint_ok_line(
+        "search systems/quartic-potentials.toml --find-values a --fix b=16 \
+         --momenta-degree 2 --positions-degree 5 --trig-degree 0 --format json",
+    ))
+    .expect("JSON");
     // Each restated line: its section's title, its label and where it holds.
     let title = |section: &serde_json::Value| {
         (json["sections"].as_array().expect("sections").iter())
