@@ -495,7 +495,8 @@ pub struct Equation {
     /// search's integral not lifted back to the parameters, or its amplitude): the search's
     /// condition, where it has one, then those values, as `--when` reads it back and as the
     /// integral's claim's condition is written (`p_theta = 1, M = 1, omega = 1, I = 1`);
-    /// `None` where it holds at the condition for every value.
+    /// `None` where it holds at the condition for every value, as a restatement an integral
+    /// not lifted is lifted through does (`2 H`, an integral for every value).
     pub in_functions_holds_at: Option<String>,
     /// The right side as the factor its terms share times what is left, `F(x p_x + y p_y)/M`
     /// ([`Expr::factored`]), where `bracket` or `expand` shows it: for a result with no form in

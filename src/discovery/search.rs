@@ -832,6 +832,29 @@ impl Restate<'_> {
         brackets::Condition::all(text, subs).ok()
     }
 
+    /// Whether `form`, the restatement at the fixed values of an integral not lifted (a
+    /// polynomial in `H`, the file's functions and its families' instances, with numeric
+    /// coefficients), is an integral for every value: `form` read back with the file's
+    /// functions as written, the parameters symbolic, and `{form, H} = 0` decided exactly at
+    /// the search's condition alone, not at the fixed values. That is sound: the
+    /// restatement was proved equal to the integral at the fixed values (and the condition),
+    /// so where this holds the integral is the value there of `form`, an integral for every
+    /// value; nothing else is claimed (the integral as found need not be one elsewhere). A
+    /// coefficient that stands for a parameter's value (`49` for `ω²` at `ω = 7`) reads
+    /// back as that number, and the check fails; so does a limit hit (`false`, never an
+    /// error).
+    fn integral_for_every_value(&self, form: &Expr) -> bool {
+        let Ok(e) = self.file.parse(&form.render(Style::Ascii)) else {
+            return false;
+        };
+        let system = self.file.system();
+        let flow = match self.condition {
+            Some(c) => system.flow_when(&e, c),
+            None => system.flow(&e),
+        };
+        flow.is_ok_and(|f| f.vanishes().unwrap_or(false))
+    }
+
     /// Each of `items` restated by `restate` (the shown integrals by
     /// [`LoadedSystem::integrals_in_functions_and_instances`], their amplitudes by
     /// [`LoadedSystem::amplitudes_in_functions`]) at the condition, but those of `unlifted`
@@ -914,9 +937,10 @@ fn report_of(
         .flat_map(|r| r.file.family_names())
         .collect();
     let shared = Shared::new(system, &families, options, r, (caller, solved), facts);
+    let forms = shared.shown_forms(r, restate)?;
     let sections = vec![
-        shared.search_section(system, options, r)?,
-        shared.basis_section(r, restate)?,
+        shared.search_section(system, options, r, &forms)?,
+        shared.basis_section(r, restate, &forms)?,
     ];
     let mut when = r
         .condition
@@ -934,6 +958,25 @@ fn report_of(
         seconds: start.elapsed().as_secs_f64(),
         caller,
     })
+}
+
+/// The shown integrals of a search as written, and restated in a file's functions where
+/// there is a file ([`Restate`]): at the condition, or, for one not lifted, at the fixed
+/// values where it holds, and then lifted through that restatement where it is an integral
+/// for every value ([`Restate::integral_for_every_value`]).
+struct ShownForms {
+    /// Each shown integral as written ([`written_forms`]).
+    written: Vec<Expr>,
+    /// Each one's restatement, where it has one (empty without a file).
+    restated: Vec<Option<Expr>>,
+    /// Where each restatement holds when only at the fixed values (JSON's `holds_at`).
+    holds_at: Vec<Option<String>>,
+    /// Whether each one, not lifted, is lifted through its restatement (empty, as the
+    /// restatements are, without a file).
+    through: Vec<bool>,
+    /// The condition with the fixed values, where those not lifted are restated, and as
+    /// superint reads it back.
+    at_fixed: Option<(brackets::Condition, String)>,
 }
 
 /// What the two sections of a search's report share: where the integrals hold, the names of
@@ -1004,6 +1047,7 @@ impl Shared {
         system: &System,
         options: &SearchOptions,
         r: &SearchResult,
+        forms: &ShownForms,
     ) -> Result<Section, EngineError> {
         let vars = system.vars();
         // Under a condition on the parameters alone (`a = 2b`), H as the search takes it, as
@@ -1028,14 +1072,17 @@ impl Shared {
             (r.on.as_ref()).map(|on| Entry::Text(level_set_text(on, !r.parameters.is_empty()))),
         );
         entries.extend(hamiltonian_note(system, options, self.caller)?);
+        // Those lifted through their restatements count with those that hold as found.
+        let through = Self::lifted_through(forms);
         let for_every_value = (0..r.basis.len())
             .filter(|&i| r.for_every_value(i).is_some())
-            .count();
+            .count()
+            + through;
         entries.extend(parameter_notes(
             r,
             system,
             self.held.fixed(),
-            for_every_value,
+            (for_every_value, through),
             (self.caller, self.solved),
         ));
         entries.extend(self.symbolic_note());
@@ -1151,26 +1198,13 @@ impl Shared {
         })))
     }
 
-    /// Section 2: the basis (or the new part; with symbolic parameters, its generators) as
-    /// written, their complex forms, and a proof of each, with one for the rest.
-    fn basis_section(
+    /// The shown integrals as written, and restated in the file's functions where `restate`
+    /// is given ([`ShownForms`]).
+    fn shown_forms(
         &self,
         r: &SearchResult,
         restate: Option<&Restate<'_>>,
-    ) -> Result<Section, EngineError> {
-        let mut entries = Vec::new();
-        entries.extend(self.generators_note(r));
-        if let Some(n) = &r.new {
-            entries.push(Entry::Text(new_integrals_text(r, n)));
-        }
-        // With denominators, each integral written as a physicist writes it: its terms
-        // collected by momenta and parameters over common denominators, reduced (the linear
-        // algebra's monomials are not independent, and its combination of them can be long).
-        // The same element.
-        // With radicals only, each integral as the search chose its monomials (results.md
-        // §13: no `r²` where a polynomial is, so the monomials show), unless it has fewer
-        // terms with the least powers of its radicals (`2β/(xr) − 2βr/(xy²)` is
-        // `−2βx/(y²r)`).
+    ) -> Result<ShownForms, EngineError> {
         let written = written_forms(r, &self.shown)?;
         // Each in the file's functions and family instances too, where it is a polynomial
         // in them.
@@ -1199,21 +1233,75 @@ impl Shared {
                 _ => None,
             })
             .collect();
-        entries.push(self.shown_equations(r, &written, &restated, &holds_at));
+        // Lifted through its restatement at the fixed values where that, read with the
+        // parameters symbolic, is an integral for every value: then it holds for every value.
+        let through: Vec<bool> = (holds_at.iter().zip(&restated))
+            .map(|(at, w)| match (restate, at, w) {
+                (Some(f), Some(_), Some(w)) => f.integral_for_every_value(w),
+                _ => false,
+            })
+            .collect();
+        let holds_at = (holds_at.into_iter().zip(&through))
+            .map(|(at, &t)| at.filter(|_| !t))
+            .collect();
+        Ok(ShownForms {
+            written,
+            restated,
+            holds_at,
+            through,
+            at_fixed,
+        })
+    }
+
+    /// The number of basis integrals lifted through their restatements ([`ShownForms`]).
+    fn lifted_through(forms: &ShownForms) -> usize {
+        forms.through.iter().filter(|&&t| t).count()
+    }
+
+    /// Section 2: the basis (or the new part; with symbolic parameters, its generators) as
+    /// written, their complex forms, and a proof of each, with one for the rest.
+    fn basis_section(
+        &self,
+        r: &SearchResult,
+        restate: Option<&Restate<'_>>,
+        forms: &ShownForms,
+    ) -> Result<Section, EngineError> {
+        let mut entries = Vec::new();
+        entries.extend(self.generators_note(r));
+        if let Some(n) = &r.new {
+            entries.push(Entry::Text(new_integrals_text(r, n)));
+        }
+        // With denominators, each integral written as a physicist writes it: its terms
+        // collected by momenta and parameters over common denominators, reduced (the linear
+        // algebra's monomials are not independent, and its combination of them can be long).
+        // The same element.
+        // With radicals only, each integral as the search chose its monomials (results.md
+        // §13: no `r²` where a polynomial is, so the monomials show), unless it has fewer
+        // terms with the least powers of its radicals (`2β/(xr) − 2βr/(xy²)` is
+        // `−2βx/(y²r)`).
+        let ShownForms {
+            written,
+            restated,
+            holds_at,
+            at_fixed,
+            ..
+        } = forms;
+        entries.push(self.shown_equations(r, written, restated, holds_at));
         let (complex, amplitudes_at_fixed) = match self.complex_forms(r, restate, at_fixed.as_ref())
         {
             Some((entry, labels)) => (Some(entry), labels),
             None => (None, Vec::new()),
         };
         entries.extend(complex);
-        let at_fixed_labels: Vec<String> = (self.shown.iter().zip(&holds_at))
+        let at_fixed_labels: Vec<String> = (self.shown.iter().zip(holds_at))
             .filter(|(_, at)| at.is_some())
             .map(|(&i, _)| self.label(i))
             .chain(amplitudes_at_fixed)
             .collect();
         entries.extend(self.restated_at_fixed_note(&at_fixed_labels));
+        entries.extend(self.lifted_through_note(forms));
         entries.extend(self.quotients(r));
-        entries.extend(self.integral_claims(r, &written));
+        entries.extend(self.integral_claims(r, forms));
         entries.extend(self.rest_proved(r));
         Ok(Section {
             number: 2,
@@ -1324,13 +1412,19 @@ impl Shared {
 
     /// A claim `{I3, H} = 0` for each shown integral, with where it holds and what its proof
     /// covers, and, with the facts for JSON, as text to read back.
-    fn integral_claims(&self, r: &SearchResult, written: &[Expr]) -> Vec<Entry> {
+    fn integral_claims(&self, r: &SearchResult, forms: &ShownForms) -> Vec<Entry> {
         self.shown
             .iter()
-            .zip(written)
-            .map(|(&i, w)| {
+            .zip(&forms.written)
+            .enumerate()
+            .map(|(k, (&i, w))| {
                 let f = &r.basis[i];
                 let label = self.label(i);
+                if let (Some(true), Some(Some(form))) =
+                    (forms.through.get(k), forms.restated.get(k))
+                {
+                    return self.claim_through(&label, form);
+                }
                 // On a level set `P = 0`: `{I, H} = Q·P`, the quotient `Q` shown above.
                 let (claim, written) = match (&r.on, &f.on_level) {
                     (Some(_), Some(proof)) if !proof.quotient.is_zero() => (
@@ -1366,6 +1460,27 @@ impl Shared {
                 })
             })
             .collect()
+    }
+
+    /// The claim of an integral `label` lifted through its restatement `form`
+    /// ([`Restate::integral_for_every_value`]): `{form, H} = 0` for every value, at the
+    /// condition alone, proved, with the fixed values where `form` is the integral (`I2 at
+    /// a = 12, b = 16, lifted through it`).
+    fn claim_through(&self, label: &str, form: &Expr) -> Entry {
+        let fixed = self.held.at(true).map(|(text, _)| text).unwrap_or_default();
+        let c = ClaimResult::derived(
+            label,
+            &format!("{{{form}, H}} = 0"),
+            true,
+            Some(format!(
+                "{label} at {fixed}, lifted through it: proved for every value"
+            )),
+        )
+        .at(self.held.at(false));
+        Entry::Claim(match self.facts {
+            true => c.written(&format!("{{{}, H}} = 0", form.render(Style::Ascii))),
+            false => c,
+        })
     }
 
     /// The label of the quotient `Q` of basis integral `i` on a level set: `Q4` beside `I4`.
@@ -1477,6 +1592,30 @@ impl Shared {
         )))
     }
 
+    /// That the integrals lifted through their restatements ([`ShownForms`]) hold for every
+    /// value: none where there are none.
+    fn lifted_through_note(&self, forms: &ShownForms) -> Option<Entry> {
+        let labels: Vec<String> = (self.shown.iter().zip(&forms.through))
+            .filter(|(_, &t)| t)
+            .map(|(&i, _)| format!("`{}`", self.label(i)))
+            .collect();
+        let (last, rest) = labels.split_last()?;
+        let (names, they, each) = match rest {
+            [] => (last.clone(), "it is", "the restatement is"),
+            _ => (
+                format!("{} and {last}", rest.join(", ")),
+                "they are",
+                "each restatement is",
+            ),
+        };
+        Some(Entry::Text(format!(
+            "Restated at `{}`, where {they} found, and lifted through the restatement: \
+             {names}. With the file's functions as written, {each} an integral for every \
+             value (proved symbolically below).",
+            self.held.at(true)?.0
+        )))
+    }
+
     /// One claim for the basis integrals not shown: all proved (`for the other 4 basis
     /// elements` after some are shown, `for the 4 basis elements` where none is).
     fn rest_proved(&self, r: &SearchResult) -> Option<Entry> {
@@ -1523,7 +1662,7 @@ fn parameter_notes(
     r: &SearchResult,
     system: &System,
     fixed: &str,
-    for_every_value: usize,
+    (for_every_value, through): (usize, usize),
     (caller, solved): (Caller, Option<Var>),
 ) -> Vec<Entry> {
     let mut notes = Vec::new();
@@ -1531,39 +1670,79 @@ fn parameter_notes(
         return notes;
     }
     let vars = system.vars();
-    let lift = how_lifted(r, for_every_value);
+    let lift = how_lifted(r, for_every_value, through);
     let off_one = off_one_note(vars, r.denominator_zero_at_one);
     notes.push(Entry::Text(format!(
         "Parameters fixed for the linear algebra: `{fixed}`{off_one}; {lift}."
     )));
-    if !(r.liftable && r.all_symbolic()) {
+    // Nothing is left not lifted where the lift, or the restatements, reach every one.
+    let all_lifted =
+        (r.liftable && r.all_symbolic()) || (through > 0 && for_every_value == r.basis.len());
+    if !all_lifted {
         notes.extend(unlifted_note(r, system, caller, solved).map(Entry::Text));
     }
     notes
 }
 
 /// Whether and how the basis found at the fixed parameters was lifted back to symbolic ones;
-/// `for_every_value` basis elements hold as found for every value when nothing is lifted.
-fn how_lifted(r: &SearchResult, for_every_value: usize) -> String {
+/// `for_every_value` basis elements hold for every value, `through` of them lifted through
+/// their restatements in the file's functions ([`Restate::integral_for_every_value`]) and the
+/// rest as found (when nothing is lifted by homogeneity) or lifted by it.
+fn how_lifted(r: &SearchResult, for_every_value: usize, through: usize) -> String {
+    let n = r.basis.len();
+    // Those lifted through their restatements, after those lifted otherwise.
+    let restatements = |t: usize| match t {
+        1 => "its restatement",
+        _ => "their restatements",
+    };
+    let others = match for_every_value < n {
+        true => ", the others at these values only",
+        false => "",
+    };
     if r.liftable && r.all_symbolic() {
         "then each basis element was lifted back to symbolic parameters by homogeneity and \
          proved symbolically"
             .to_string()
     } else if r.liftable {
-        "then lifted back to symbolic parameters by homogeneity where possible".to_string()
+        let more = match through {
+            0 => String::new(),
+            t => format!(
+                ", and {t} more through {} in the file's functions (proved symbolically){others}",
+                restatements(t)
+            ),
+        };
+        format!("then lifted back to symbolic parameters by homogeneity where possible{more}")
     } else {
-        match for_every_value {
-            0 => "the weights do not determine every parameter, so nothing is lifted, and \
-                  the basis is proved at these values only"
-                .to_string(),
-            k => format!(
-                "the weights do not determine every parameter, so nothing is lifted; {k} of \
-                 the {} {} as found for every value (proved symbolically), the others at \
-                 these values only",
-                counted(r.basis.len(), "basis element"),
+        let as_found = for_every_value - through;
+        let held = match (as_found, through) {
+            (0, 0) => {
+                return "the weights do not determine every parameter, so nothing is lifted, \
+                        and the basis is proved at these values only"
+                    .to_string()
+            }
+            (k, 0) => format!(
+                "{k} of the {} {} as found for every value",
+                counted(n, "basis element"),
                 agreeing(k, "holds", "hold")
             ),
-        }
+            (0, t) => format!(
+                "{t} of the {} {} for every value through {} in the file's functions",
+                counted(n, "basis element"),
+                agreeing(t, "holds", "hold"),
+                restatements(t)
+            ),
+            (k, t) => format!(
+                "{k} of the {} {} for every value as found and {t} through {} in the file's \
+                 functions",
+                counted(n, "basis element"),
+                agreeing(k, "holds", "hold"),
+                restatements(t)
+            ),
+        };
+        format!(
+            "the weights do not determine every parameter, so nothing is lifted; {held} \
+             (proved symbolically){others}"
+        )
     }
 }
 

@@ -67,7 +67,9 @@
 //!                          at those values alone, the `--when` condition first where there
 //!                          is one, "p_theta = 1, M = 1, omega = 1, I = 1", as the integral's
 //!                          claim's "condition_ascii" and `--when` read it; absent where the
-//!                          restatement holds at the condition for every value),
+//!                          restatement holds at the condition for every value, as one that
+//!                          integral is lifted through does, an integral for every value with
+//!                          the parameters symbolic: "2*H", the claim "{2*H, H} = 0"),
 //!                 "factored": { "text", "ascii", "latex" } | null   (the right side as the
 //!                          factor its terms share times the rest, where `bracket` or `expand`
 //!                          finds one: "F*(x*p_x + y*p_y)/M") } ],

@@ -1697,6 +1697,51 @@ fn dipole_rotor_no_frequency_adds_an_integral_at_degree_two() {
     assert!(!out.contains("but those above"), "{out}");
 }
 
+/// Section 31: at the generic `ω = 7`, with `M = I = ε = 1` fixed, `Φ3` is `2 H` there, and
+/// `2 H`, read with the file's `H` as written, is an integral for every value: `Φ3` is lifted
+/// through its restatement, counted with the integrals that hold for every value, its claim
+/// `{2 H, H} = 0` proved for every value, and the advice for what is not lifted not given, as
+/// nothing is left; JSON's restatement has no `holds_at`.
+#[test]
+fn dipole_rotor_energy_at_fixed_values_is_lifted_through_two_h() {
+    let out = expect(
+        "dipole-rotor-values-omega",
+        &[
+            "3 of the 4 basis elements hold for every value as found and 1 through its \
+             restatement in the file's functions (proved symbolically).",
+            "Restated at ω = 7, M = 1, I = 1, ε = 1, where it is found, and lifted through the \
+             restatement: Φ3.",
+            "{2 H, H} = 0 at ω = 7 [Φ3 proved] \
+             Φ3 at ω = 7, M = 1, I = 1, ε = 1, lifted through it: proved for every value",
+        ],
+    );
+    for absent in [
+        "What is not lifted",
+        "not lifted back",
+        "where it holds (not lifted)",
+    ] {
+        assert!(!out.contains(absent), "{absent:?} in:\n{out}");
+    }
+    let json: serde_json::Value = serde_json::from_str(&superint_ok_line(
+        "search systems/dipole-rotor.toml --find-values omega --fix M=1,I=1,epsilon=1 \
+         --momenta-degree 2 --positions-degree 2 --trig-degree 2 --format json",
+    ))
+    .expect("JSON");
+    let line = (json["equations"].as_array().expect("equations").iter())
+        .flat_map(|e| e["lines"].as_array().expect("lines"))
+        .find(|l| l["lhs"] == "Φ3")
+        .expect("Φ3 shown");
+    assert_eq!(line["in_functions"]["ascii"], "2*H", "{line}");
+    assert!(line["in_functions"].get("holds_at").is_none(), "{line}");
+    let claim = (json["claims"].as_array().expect("claims").iter())
+        .find(|c| c["id"] == "Φ3")
+        .expect("Φ3's claim");
+    assert_eq!(claim["ascii"], "{2*H, H} = 0", "{claim}");
+    assert_eq!(claim["condition_ascii"], "omega = 7", "{claim}");
+    assert_eq!(claim["outcome"], "proved", "{claim}");
+    assert_eq!(json["searches"][0]["for_every_value"], 4, "{json}");
+}
+
 /// Section 31: the field strength `ε = 0`, the paper's harmonic rotor, is the one value of `ε`
 /// with more integrals at degree 2; the other roots are complex and ruled out.
 #[test]
@@ -3639,11 +3684,13 @@ fn a_searchs_labels_and_suggestions_do_not_repeat_the_systems_own() {
         "{text}"
     );
     // The weights cannot lift `I1, I2, k`, but the total momentum holds as found for every
-    // value, and is proved so: it was said to hold "at I1 = 2, I2 = 3, k = 1" only.
+    // value, and is proved so: it was said to hold "at I1 = 2, I2 = 3, k = 1" only; `J4`,
+    // `12 H` there, is lifted through `12 H`.
     assert!(
         text.contains(
-            "nothing is lifted; 2 of the 4 basis elements hold as found for every value (proved \
-             symbolically), the others at these values only"
+            "nothing is lifted; 2 of the 4 basis elements hold for every value as found and 1 \
+             through its restatement in the file's functions (proved symbolically), the others \
+             at these values only"
         ),
         "{text}"
     );
@@ -3656,7 +3703,8 @@ fn a_searchs_labels_and_suggestions_do_not_repeat_the_systems_own() {
     assert_eq!(conditions[1], &serde_json::Value::Null);
     assert_eq!(conditions[2], "I1 = 2, I2 = 3, k = 1");
     assert_eq!(v["claims"][2]["condition_ascii"], "I1 = 2, I2 = 3, k = 1");
-    assert_eq!(v["searches"][0]["for_every_value"], 2);
+    assert_eq!(conditions[3], &serde_json::Value::Null);
+    assert_eq!(v["searches"][0]["for_every_value"], 3);
 }
 
 /// With parameters kept symbolic, a search says when `H`, or the first power of it that the
@@ -6955,8 +7003,10 @@ fn a_built_in_systems_resonant_functions_added_to_a_copy_are_those_it_is_built_w
 
 /// At `--fix` values an integral not lifted back to the parameters holds there only, and is
 /// restated there, `H` and the file's functions with the values put in: the parabolic
-/// integral's companion of the quartic potentials is `2 H` at `a = 12, b = 16` (it was shown
-/// with no form, as `H` with `a, b` free is none of it). One lifted holds for every value
+/// integral `I3` of the quartic potentials is `P` at `a = 12, b = 16`, where alone `{P, H} = 0`,
+/// so it stays there; its companion `I2` is `2 H` there (it was shown with no form, as `H`
+/// with `a, b` free is none of it), and `2 H` is an integral for every value, so `I2` is lifted
+/// through it, counted with those that hold for every value. One lifted holds for every value
 /// and is not restated at the values: under `H = p²/2 + ay`, `p_x` is `K = p_x + a p_y` at
 /// `a = 0` alone, where `K` is no integral elsewhere; `x p_y − y p_x`, an integral at `a = 0`
 /// only, is `M = x p_y − y p_x + ax` there.
@@ -6966,12 +7016,23 @@ fn search_at_fixed_values_restates_there_only_what_is_not_lifted() {
         "search systems/quartic-potentials.toml --fix a=12,b=16 --momenta-degree 2 \
          --positions-degree 5 --trig-degree 0",
     ));
-    assert!(
-        quartic.contains("I2 = p_x² + p_y² + 2x⁴ + 24x²y² + 32y⁴ = 2 H")
-            && quartic
-                .contains("Restated at a = 12, b = 16, where they hold (not lifted): I2 and I3,"),
-        "{quartic}"
-    );
+    for piece in [
+        "I2 = p_x² + p_y² + 2x⁴ + 24x²y² + 32y⁴ = 2 H",
+        "so nothing is lifted; 1 of the 3 basis elements holds for every value as found and 1 \
+         through its restatement in the file's functions (proved symbolically), the others at \
+         these values only.",
+        "What is not lifted holds at these values",
+        "Restated at a = 12, b = 16, where it holds (not lifted): I3, with H and the file's \
+         functions at these values.",
+        "Restated at a = 12, b = 16, where it is found, and lifted through the restatement: I2.",
+        "{2 H, H} = 0 [I2 proved] I2 at a = 12, b = 16, lifted through it: proved for every value",
+        "{I3, H} = 0 at a = 12, b = 16 [I3 proved] not lifted back to the parameters",
+    ] {
+        assert!(
+            quartic.contains(&normalize(piece)),
+            "no {piece:?} in:\n{quartic}"
+        );
+    }
     let text = "name = \"fall\"\nhamiltonian = \"p_x^2/2 + p_y^2/2 + a*y\"\n\
         [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\"]\n\
         [[function]]\nname = \"K\"\nvalue = \"p_x + a*p_y\"\n\
@@ -7022,7 +7083,8 @@ fn restated(json: &serde_json::Value) -> Vec<(String, serde_json::Value)> {
 
 /// In JSON, a restatement of an integral not lifted back to the parameters fixed with `--fix`
 /// says where it holds, `"holds_at"`, as the text's "Restated at … (not lifted)" does: the
-/// quartic potentials' `I2 = 2 H` and `I3 = P` at `a = 12, b = 16`; under `H = p²/2 + ay` at
+/// quartic potentials' `I3 = P` at `a = 12, b = 16`, but not their `I2 = 2 H`, lifted through
+/// `2 H`, an integral for every value, whose claim is `{2*H, H} = 0`; under `H = p²/2 + ay` at
 /// `a = 0`, `x p_y − y p_x = M` there alone, while `p_x = L`, lifted, holds for every value
 /// and carries no such field.
 #[test]
@@ -7043,9 +7105,24 @@ fn json_says_where_a_restatement_of_an_integral_not_lifted_holds() {
     let labels: Vec<&str> = forms.iter().map(|(l, _)| l.as_str()).collect();
     assert_eq!(labels, ["I2", "I3"], "{quartic}");
     assert_eq!(forms[0].1["ascii"], "2*H");
-    for (label, form) in &forms {
-        assert_eq!(form["holds_at"], "a = 12, b = 16", "{label}: {form}");
-    }
+    assert!(forms[0].1.get("holds_at").is_none(), "{quartic}");
+    assert_eq!(forms[1].1["holds_at"], "a = 12, b = 16", "{quartic}");
+    let claim = |id: &str| {
+        (quartic["claims"].as_array().expect("claims").iter())
+            .find(|c| c["id"] == id)
+            .map(|c| (c["ascii"].clone(), c["condition_ascii"].clone()))
+    };
+    let null = serde_json::Value::Null;
+    assert_eq!(
+        claim("I2"),
+        Some(("{2*H, H} = 0".into(), null)),
+        "{quartic}"
+    );
+    assert_eq!(
+        claim("I3").map(|(_, at)| at),
+        Some("a = 12, b = 16".into()),
+        "{quartic}"
+    );
     let text = "name = \"fall\"\nhamiltonian = \"p_x^2/2 + p_y^2/2 + a*y\"\n\
         [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\"]\n\
         [[function]]\nname = \"L\"\nvalue = \"p_x\"\n\
