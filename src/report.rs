@@ -258,15 +258,23 @@ pub struct ValueFacts {
     pub dimension: usize,
     /// The section of the search at it.
     pub section: u32,
+    /// The functional rank of the basis there, and whether it is exact (else a lower bound).
+    pub functional_rank: (usize, bool),
 }
 
 impl ValueFacts {
     /// The facts of a value.
-    pub fn new(value: String, dimension: usize, section: u32) -> Self {
+    pub fn new(
+        value: String,
+        dimension: usize,
+        section: u32,
+        functional_rank: &brackets::BoundedRank,
+    ) -> Self {
         ValueFacts {
             value,
             dimension,
             section,
+            functional_rank: (functional_rank.rank(), functional_rank.is_exact()),
         }
     }
 }

@@ -880,7 +880,7 @@ fn find_values(
     // `--fix` does. The engine keeps those with more integrals; their options are kept here
     // for their reports.
     let mut searched: Vec<(trigpoly::Rational, SearchOptions)> = Vec::new();
-    let found = candidates.confirm(|value| -> anyhow::Result<SearchResult> {
+    let found = candidates.confirm(system.space(), |value| -> anyhow::Result<SearchResult> {
         let mut at = options.clone();
         match &options.on {
             Some(_) => at.fixed.push((parameter, value.clone())),

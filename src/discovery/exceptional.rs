@@ -3,7 +3,8 @@
 //! ([`brackets::search::exceptional_values`]), then the search at the generic value and at
 //! each of those values, as `--when` shows it (on a level set, as `--fix` does).
 
-use brackets::search::ExceptionalValues;
+use brackets::search::{level_set_graph_variable, ExceptionalValues, MAX_RANK_MINORS};
+use brackets::BoundedRank;
 use brackets::System;
 use trigpoly::Style;
 
@@ -47,11 +48,28 @@ pub fn exceptional_values_report(
     let on = (found.generic.on.as_ref())
         .map(|on| format!(" on the level set `{}`", level_set_shown(on)))
         .unwrap_or_default();
+    // The ranks are those on the level set where it is a graph over the variables the
+    // integrals hold, else those in the whole phase space: said which.
+    let searches_found =
+        std::iter::once(&found.generic).chain(found.values.iter().map(|v| &v.found));
+    let graph_over = searches_found
+        .map(|r| level_set_graph_variable(system.space(), r))
+        .collect::<Option<Vec<_>>>();
+    let ranks_where = match graph_over.as_ref().and_then(|v| v.first()) {
+        Some(&v) => format!(
+            "The functional ranks below are those on the level set, a graph over the phase \
+             variables but `{}`, which no integral found holds.",
+            vars.variable(v).unicode()
+        ),
+        None => "The functional ranks below are those of the functions found in the whole \
+                 phase space, not on the level set."
+            .to_string(),
+    };
     if !on.is_empty() {
         entries.push(Entry::Text(format!(
             "These are the values{on}: the equations are those of the search there (section 2), \
              each bracket taken modulo its polynomial, which does not hold `{t}`; off the level \
-             set they may have no more integrals."
+             set they may have no more integrals. {ranks_where}"
         )));
     }
     // The sections of the searches begin after this one, each search's after the last's.
@@ -71,15 +89,26 @@ pub fn exceptional_values_report(
             section_of(k)
         )
     };
+    let generic_rank = &found.generic_rank;
     entries.push(Entry::Text(format!(
-        "For a generic `{t}` (searched at `{t} = {}`, no root): {}.",
+        "For a generic `{t}` (searched at `{t} = {}`, no root): {}, of functional rank {}.",
         shown(&told.generic_value),
-        dimension(0, &found.generic)
+        dimension(0, &found.generic),
+        rank_shown(generic_rank)
     )));
     let values: Vec<String> = (found.values.iter().enumerate())
         .map(|(k, v)| {
+            let same = v.rank.rank() == generic_rank.rank();
+            let rank = match same && v.rank.is_exact() && generic_rank.is_exact() {
+                true => format!("{} as at a generic `{t}`", v.rank.rank()),
+                false => format!(
+                    "{} against {} at a generic `{t}`",
+                    rank_shown(&v.rank),
+                    rank_shown(generic_rank),
+                ),
+            };
             format!(
-                "at `{t} = {}`, {}",
+                "at `{t} = {}`, {}, of functional rank {rank}",
                 shown(&v.value),
                 dimension(k + 1, &v.found)
             )
@@ -89,6 +118,31 @@ pub fn exceptional_values_report(
         true => format!("No rational value of `{t}` has more integrals."),
         false => format!("More integrals {}.", listed(&values)),
     }));
+    // The values a physicist asks for: those whose integrals are not all functions of the
+    // generic ones.
+    let new: Vec<String> = (found.values.iter())
+        .filter(|v| v.functionally_new(generic_rank))
+        .map(|v| format!("`{t} = {}`", shown(&v.value)))
+        .collect();
+    let ranks = std::iter::once(generic_rank).chain(found.values.iter().map(|v| &v.rank));
+    if !new.is_empty() {
+        entries.push(Entry::Text(format!(
+            "Functionally new integrals, a functional rank above the generic one, at {}.",
+            listed(&new)
+        )));
+    } else if !found.values.is_empty() && ranks.clone().all(BoundedRank::is_exact) {
+        entries.push(Entry::Text(format!(
+            "No value of `{t}` has functionally new integrals: none has a functional rank above \
+             the generic one."
+        )));
+    }
+    if ranks.clone().any(|r| !r.is_exact()) {
+        entries.push(Entry::Text(format!(
+            "A functional rank (of the Jacobian of the integrals by every phase variable) said \
+             \"at least\" is certified from below alone: more than {MAX_RANK_MINORS} minors \
+             border its nonzero one."
+        )));
+    }
     if !found.spurious.is_empty() {
         let roots: Vec<String> = (found.spurious.iter())
             .map(|r| format!("`{t} = {}`", shown(r)))
@@ -177,15 +231,15 @@ pub fn exceptional_values_report(
         },
     }));
     if facts {
-        let value = |k: usize, v: &trigpoly::Rational, r: &brackets::search::SearchResult| {
-            ValueFacts::new(v.to_string(), r.basis.len(), section_of(k))
+        let value = |k: usize, v: &trigpoly::Rational, r: &brackets::search::SearchResult, rank| {
+            ValueFacts::new(v.to_string(), r.basis.len(), section_of(k), rank)
         };
         entries.push(Entry::Data(Facts::ExceptionalValues(
             ExceptionalFacts::new(
                 vars.variable(told.parameter).name().to_string(),
-                value(0, &told.generic_value, &found.generic),
+                value(0, &told.generic_value, &found.generic, generic_rank),
                 (found.values.iter().enumerate())
-                    .map(|(k, v)| value(k + 1, &v.value, &v.found))
+                    .map(|(k, v)| value(k + 1, &v.value, &v.found, &v.rank))
                     .collect(),
                 found.spurious.iter().map(ToString::to_string).collect(),
                 (unexamined.as_ref().zip(real_roots))
@@ -238,6 +292,14 @@ pub fn exceptional_values_report(
         summary: SummaryKind::Searches,
         seconds,
         caller,
+    }
+}
+
+/// A functional rank as the prose says it: `2`, or `at least 2` where it is a lower bound.
+fn rank_shown(rank: &BoundedRank) -> String {
+    match rank {
+        BoundedRank::Exact(cert) => cert.rank.to_string(),
+        BoundedRank::AtLeast(rank) => format!("at least {rank}"),
     }
 }
 

@@ -131,10 +131,16 @@
 //!                   "closes": bool, "outside": [[a, b]], "unlifted": int,
 //!                   "brackets": [ids], "relations": [ids] } ],
 //!   "exceptional_values": [ { "section", "parameter", "generic": { "value", "dimension",
-//!                   "section" } (the search at a value that is no root of any determinant,
-//!                   shown in section "section"), "values": [ { "value", "dimension",
-//!                   "section" } ] (the rational values with more integrals, increasing, each
-//!                   with the section of the search there), "not_exceptional": [values] (the
+//!                   "section", "functional_rank", "functional_rank_exact" } (the search at a
+//!                   value that is no root of any determinant, shown in section "section";
+//!                   "functional_rank": int, the rank of the Jacobian of its basis by every
+//!                   phase variable, in the whole phase space on a level set too,
+//!                   "functional_rank_exact": bool, false where it is only a lower bound, the
+//!                   upper bound's bordering minors too many), "values": [ { "value",
+//!                   "dimension", "section", "functional_rank", "functional_rank_exact" } ]
+//!                   (the rational values with more integrals, increasing, each with the
+//!                   section of the search there; a rank larger than the generic one's, that
+//!                   exact, means functionally new integrals), "not_exceptional": [values] (the
 //!                   rational roots of the determinants where the search found no more),
 //!                   "unexamined": ascii | null (the polynomial in the parameter whose
 //!                   roots, irrational and complex, were not ruled out: every minor tried
@@ -641,7 +647,15 @@ fn search(f: &SearchFacts, section: u32) -> Value {
 
 /// The exceptional values of `superint search --find-values`.
 fn exceptional_values(f: &ExceptionalFacts, section: u32) -> Value {
-    let value = |v: &ValueFacts| json!({ "value": v.value, "dimension": v.dimension, "section": v.section });
+    let value = |v: &ValueFacts| {
+        json!({
+            "value": v.value,
+            "dimension": v.dimension,
+            "section": v.section,
+            "functional_rank": v.functional_rank.0,
+            "functional_rank_exact": v.functional_rank.1,
+        })
+    };
     json!({
         "section": section,
         "parameter": f.parameter,

@@ -942,3 +942,120 @@ fn find_values_says_where_each_values_restatements_hold() {
     ];
     assert_eq!(claims, expected, "{json}");
 }
+
+/// Each value's `(value, functional rank)` in `found` (an `exceptional_values` entry), every
+/// rank asserted exact, and the generic rank, as JSON writes them.
+fn functional_ranks(found: &serde_json::Value) -> (u64, Vec<(String, u64)>) {
+    let rank = |v: &serde_json::Value| {
+        assert_eq!(v["functional_rank_exact"], true, "{v}");
+        v["functional_rank"].as_u64().unwrap()
+    };
+    let values = (found["values"].as_array().unwrap().iter())
+        .map(|v| (v["value"].as_str().unwrap().to_string(), rank(v)))
+        .collect();
+    (rank(&found["generic"]), values)
+}
+
+/// The oscillator `x² + a y²`, quadratic: at `a = 1` the isotropic `x p_y − y p_x` is
+/// functionally new (rank 3 against 2 in four phase variables, the energies along `x` and `y`
+/// generic); at `a = 0` the free `p_y` and `p_y²` are more integrals but no new function
+/// (`p_y²/2` is the energy along `y`): rank 2, as generic.
+#[test]
+fn the_isotropic_oscillator_has_a_functionally_new_integral_and_the_free_one_none() {
+    let file = oscillator("ranks.toml", "(x^2 + a*y^2)/2");
+    let args = values_of_a(&file, &["--momenta-degree", "2", "--positions-degree", "2"]);
+    let json = superint_json(&args);
+    let (generic, values) = functional_ranks(&json["exceptional_values"][0]);
+    assert_eq!(generic, 2);
+    assert_eq!(values, [("0".to_string(), 2), ("1".to_string(), 3)]);
+    let text = normalize(&superint_ok(&args)).replace('\n', " ");
+    assert!(
+        text.contains("no root): 3 integrals (section 2), of functional rank 2."),
+        "{text}"
+    );
+    assert!(
+        text.contains("of functional rank 2 as at a generic a"),
+        "{text}"
+    );
+    assert!(
+        text.contains("of functional rank 3 against 2 at a generic a"),
+        "{text}"
+    );
+    assert!(
+        text.contains(
+            "Functionally new integrals, a functional rank above the generic one, at a = 1."
+        ),
+        "{text}"
+    );
+}
+
+/// Section 31's dipole rotor at momenta 3, positions 2, order 2: `ω = 0` has a fifth integral,
+/// `2M H J`, which fits positions degree 2 only there, and no functionally new one: rank 2
+/// (`H` and `J`), as at a generic `ω`, and the text says no value has any.
+#[test]
+fn dipole_rotor_at_omega_zero_has_more_integrals_but_none_functionally_new() {
+    let args = [
+        "search",
+        "systems/dipole-rotor.toml",
+        "--find-values",
+        "omega",
+        "--momenta-degree",
+        "3",
+        "--positions-degree",
+        "2",
+        "--trig-degree",
+        "2",
+    ];
+    // Searched once (6 s in a debug build): the text says the ranks.
+    let text = normalize(&superint_ok(&args)).replace('\n', " ");
+    assert!(
+        text.contains("no root): 4 integrals (section 2), of functional rank 2."),
+        "{text}"
+    );
+    assert!(
+        text.contains("More integrals at ω = 0, 5 integrals (section 4), of functional rank 2 as at a generic ω."),
+        "{text}"
+    );
+    assert!(
+        text.contains("No value of ω has functionally new integrals"),
+        "{text}"
+    );
+}
+
+/// On `p_θ = 1` the level set is a graph over the other phase variables, and the integrals
+/// found hold no `p_θ`: the ranks are those on it, and the text says so. Of degree 1 in the
+/// momenta, the positions and `θ`: for a generic `ω`, `1` and `L` (rank 1); at `ω = ±1`,
+/// `(p_x ± i x)e^{∓iθ}`, `(p_y ± i y)e^{∓iθ}` too, four real functions of rank 4 (the most a
+/// flow's integrals have on the five dimensions of the level set), functionally new; at
+/// `ω = 0`, `p_x`, `p_y` and `L`, rank 3, new as well.
+#[test]
+fn harmonic_rotor_resonance_on_p_theta_one_has_functionally_new_integrals() {
+    let find = [
+        "search",
+        HARMONIC_ROTOR,
+        "--find-values",
+        "omega",
+        "--on",
+        "p_theta = 1",
+        "--fix",
+        "M=1,I=1,l=1",
+    ];
+    let args = [&find[..], &crate::DEGREE_ONE].concat();
+    let json = superint_json(&args);
+    let (generic, values) = functional_ranks(&json["exceptional_values"][0]);
+    assert_eq!(generic, 1);
+    let expected = [("-1", 4), ("0", 3), ("1", 4)].map(|(v, r)| (v.to_string(), r));
+    assert_eq!(values, expected);
+    let text = normalize(&superint_ok(&args)).replace('\n', " ");
+    assert!(
+        text.contains(
+            "The functional ranks below are those on the level set, a graph over the phase \
+             variables but p_θ, which no integral found holds."
+        ),
+        "{text}"
+    );
+    assert!(
+        text.contains("Functionally new integrals, a functional rank above the generic one, at ω = −1, ω = 0 and ω = 1."),
+        "{text}"
+    );
+}

@@ -233,12 +233,75 @@ pub fn level_set_coordinates(
         .collect())
 }
 
+/// A rank certified from below, and from above where that costs at most a given number of
+/// bordering minors ([`rank_within`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum BoundedRank {
+    /// Certified both ways.
+    Exact(RankCertificate),
+    /// At least this: a minor of this size is nonzero at an exact point, but more minors
+    /// border it than the upper bound was allowed to expand.
+    AtLeast(usize),
+}
+
+impl BoundedRank {
+    /// The rank, or its lower bound.
+    pub fn rank(&self) -> usize {
+        match self {
+            BoundedRank::Exact(cert) => cert.rank,
+            BoundedRank::AtLeast(rank) => *rank,
+        }
+    }
+
+    /// Whether the rank is certified from above too.
+    pub fn is_exact(&self) -> bool {
+        matches!(self, BoundedRank::Exact(_))
+    }
+}
+
+/// [`rank`], the upper bound certified only where the rank equals the number of functions or
+/// of coordinates or at most `max_minors` minors border the nonzero one: past that, the
+/// rank is said to be at least the lower bound ([`BoundedRank::AtLeast`]).
+///
+/// ```
+/// use brackets::{rank_within, systems, BoundedRank};
+///
+/// let rotor = systems::harmonic_rotor();
+/// let get = |name: &str| rotor.get(name).cloned();
+/// let tied = [get("F1")?, get("F2")?, get("L")?, get("G1")?, get("G2")?];
+/// // Rank 4 in six phase variables: (5 − 4)(6 − 4) = 2 bordering minors.
+/// assert!(rank_within(rotor.space(), &tied, 2)?.is_exact());
+/// assert_eq!(rank_within(rotor.space(), &tied, 1)?, BoundedRank::AtLeast(4));
+/// # Ok::<(), brackets::EngineError>(())
+/// ```
+pub fn rank_within(
+    space: &PhaseSpace,
+    functions: &[Expr],
+    max_minors: usize,
+) -> Result<BoundedRank, EngineError> {
+    rank_bounded_by(space, functions, space.coordinates(), max_minors)
+}
+
 /// The certified rank of the Jacobian of `functions` by the phase variables `coords`.
 fn rank_by(
     space: &PhaseSpace,
     functions: &[Expr],
     coords: Vec<Var>,
 ) -> Result<RankCertificate, EngineError> {
+    match rank_bounded_by(space, functions, coords, usize::MAX)? {
+        BoundedRank::Exact(cert) => Ok(cert),
+        BoundedRank::AtLeast(_) => unreachable!("every bordering minor may be expanded"),
+    }
+}
+
+/// The rank of the Jacobian of `functions` by the phase variables `coords`, certified from
+/// above where at most `max_minors` minors border the nonzero one.
+fn rank_bounded_by(
+    space: &PhaseSpace,
+    functions: &[Expr],
+    coords: Vec<Var>,
+    max_minors: usize,
+) -> Result<BoundedRank, EngineError> {
     let jac: Vec<Vec<Expr>> = functions
         .iter()
         .map(|f| {
@@ -305,6 +368,9 @@ fn rank_by(
     // are tried until one shows it, which raises the lower bound.
     let further = FIRST_POINTS + EARLY_POINTS..FIRST_POINTS + EARLY_POINTS + FURTHER_POINTS;
     while cert.rank < full {
+        if (functions.len() - cert.rank) * (coords.len() - cert.rank) > max_minors {
+            return Ok(BoundedRank::AtLeast(cert.rank));
+        }
         if let Some(count) = vanishing_bordering_minors(&jac, &coords, &cert)? {
             cert.upper = UpperBound::VanishingMinors { count };
             break;
@@ -334,7 +400,7 @@ fn rank_by(
             }
         }
     }
-    Ok(cert)
+    Ok(BoundedRank::Exact(cert))
 }
 
 /// An exact point, and its values as the certificate lists them.

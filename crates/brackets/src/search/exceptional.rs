@@ -49,7 +49,9 @@
 //! value, the other roots ruled out or not examined), and [`Candidates::confirm`] searches at
 //! each with a search it is given
 //! ([`exceptional_values`] gives the ordinary one; `superint search --find-values` its own,
-//! whose reports it shows), so that each value is searched once.
+//! whose reports it shows), so that each value is searched once. Each search's basis gets its
+//! functional rank ([`functional_rank`]): a value whose rank is larger than the generic one
+//! holds functionally new integrals, not only products of those every value has.
 //!
 //! On a level set `P = 0` (`SearchOptions::on`), `M(t)` is that of the search there: the
 //! monomials divisible by `P`'s leading monomial left out and each image its remainder on
@@ -96,6 +98,8 @@ use trigpoly::{Expr, Rational, Var, VarKind, Vars};
 
 use crate::error::{EngineError, EngineLimit};
 use crate::modular::{big_mod, inverse_mod, mul_mod, previous_prime, PRIME};
+use crate::phase::PhaseSpace;
+use crate::rank::{rank_within, BoundedRank};
 use crate::system::System;
 use crate::univariate::{gcd_mod, is_square_free_mod, IntPoly, ResidueRing};
 
@@ -115,6 +119,8 @@ pub struct ExceptionalValues {
     pub determinants: Determinants,
     /// The ordinary search at [`Determinants::generic_value`].
     pub generic: SearchResult,
+    /// The functional rank of [`ExceptionalValues::generic`]'s basis ([`functional_rank`]).
+    pub generic_rank: BoundedRank,
     /// The rational values where the space holds more integrals, increasing, each with the
     /// ordinary search there.
     pub values: Vec<ExceptionalValue>,
@@ -204,6 +210,54 @@ pub struct ExceptionalValue {
     pub value: Rational,
     /// The search at it: more integrals than [`ExceptionalValues::generic`].
     pub found: SearchResult,
+    /// The functional rank of its basis ([`functional_rank`]): larger than
+    /// [`ExceptionalValues::generic_rank`] where some of its integrals are functionally new,
+    /// not functions of those every value has.
+    pub rank: BoundedRank,
+}
+
+impl ExceptionalValue {
+    /// Whether the value holds functionally new integrals: its basis is certified of larger
+    /// functional rank than the generic one, whose rank is exact (a lower bound there would
+    /// leave it open).
+    pub fn functionally_new(&self, generic: &BoundedRank) -> bool {
+        generic.is_exact() && self.rank.rank() > generic.rank()
+    }
+}
+
+/// How many minors bordering the nonzero one [`functional_rank`] expands to certify the rank
+/// from above; past that it gives the lower bound alone. The harmonic rotor at `ω = 1`, 20
+/// integrals of rank 5 in 6 phase variables, takes 15.
+pub const MAX_RANK_MINORS: usize = 64;
+
+/// The functional rank of a search's basis: the rank of the Jacobian of its integrals, at the
+/// fixed parameter values, by every phase variable ([`rank_within`], at most
+/// [`MAX_RANK_MINORS`] bordering minors). On a level set it is the rank in the whole phase
+/// space of the functions the search found, which is that on the level set where
+/// [`level_set_graph_variable`] gives a variable.
+pub fn functional_rank(
+    space: &PhaseSpace,
+    found: &SearchResult,
+) -> Result<BoundedRank, EngineError> {
+    let functions: Vec<Expr> = found.basis.iter().map(|i| i.fixed.clone()).collect();
+    rank_within(space, &functions, MAX_RANK_MINORS)
+}
+
+/// The phase variable `v` the level set of a search is a graph over the others by, where
+/// [`functional_rank`] is the rank on the level set: `LM(P)` is `v` itself, so that `P` is a
+/// number times `v` plus terms free of it, and no integral found holds `v` (none does: the
+/// monomials `LM(P)` divides are left out). Each integral is then its own restriction to the
+/// level set, and its Jacobian by every phase variable is that by the variables the level
+/// set leaves free beside a zero column. `None` off a level set, or where `LM(P)` is another
+/// monomial (the rank is then that in the whole phase space).
+pub fn level_set_graph_variable(space: &PhaseSpace, found: &SearchResult) -> Option<Var> {
+    let level = found.on.as_ref()?;
+    let vars = space.vars();
+    space.coordinates().into_iter().find(|&v| {
+        vars.variable(v).kind() != VarKind::Angle
+            && level.leading_monomial == Expr::var(vars, v)
+            && found.basis.iter().all(|i| !i.fixed.contains(v))
+    })
 }
 
 /// The candidates for the exceptional values, before any search at them
@@ -243,7 +297,7 @@ impl Candidates {
     /// let a = vars.lookup("a").unwrap();
     /// let candidates = exceptional_candidates(&oscillator, &options, a)?;
     /// let mut searched = Vec::new();
-    /// let found = candidates.confirm(|value| {
+    /// let found = candidates.confirm(oscillator.space(), |value| {
     ///     searched.push(value.to_string());
     ///     search(&oscillator, &options.clone().fix(a, value.clone()))
     /// })?;
@@ -254,17 +308,20 @@ impl Candidates {
     /// assert_eq!(values, ["0", "1"]);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
-    pub fn confirm<E>(
+    pub fn confirm<E: From<EngineError>>(
         self,
+        space: &PhaseSpace,
         mut search_at: impl FnMut(&Rational) -> Result<SearchResult, E>,
     ) -> Result<ExceptionalValues, E> {
         let generic = search_at(&self.determinants.generic_value)?;
+        let generic_rank = functional_rank(space, &generic)?;
         let mut values = Vec::new();
         let mut spurious = Vec::new();
         for value in self.roots {
             let found = search_at(&value)?;
             if found.basis.len() > generic.basis.len() {
-                values.push(ExceptionalValue { value, found });
+                let rank = functional_rank(space, &found)?;
+                values.push(ExceptionalValue { value, found, rank });
             } else {
                 spurious.push(value);
             }
@@ -272,6 +329,7 @@ impl Candidates {
         Ok(ExceptionalValues {
             determinants: self.determinants,
             generic,
+            generic_rank,
             values,
             spurious,
         })
@@ -287,7 +345,7 @@ pub fn exceptional_values(
     options: &SearchOptions,
     parameter: Var,
 ) -> Result<ExceptionalValues, EngineError> {
-    exceptional_candidates(system, options, parameter)?.confirm(|value| {
+    exceptional_candidates(system, options, parameter)?.confirm(system.space(), |value| {
         let mut options = options.clone();
         options.fixed.push((parameter, value.clone()));
         search(system, &options)
@@ -1379,7 +1437,7 @@ mod tests {
         let roots = candidates.roots.clone();
         let mut searched = Vec::new();
         let found = candidates
-            .confirm(|value| {
+            .confirm(system.space(), |value| {
                 searched.push(value.clone());
                 search(&system, &options.clone().fix(a, value.clone()))
             })
