@@ -1445,9 +1445,8 @@ fn henon_heiles_values_of_c_with_a_second_quadratic_integral_found_from_h_alone(
     expect_alone(
         "hh-values-quadratic",
         &[
-            "For a generic C (searched at C = 7, no root): 2 integrals (section 2).",
-            "More integrals at C = 1/3, 3 integrals (section 4) and at C = 2, 3 integrals \
-             (section 6).",
+            "For a generic C (searched at C = 7, no root): 2 integrals (section 2), of functional rank 1.",
+            "More integrals at C = 1/3, 3 integrals (section 4), of functional rank 2 against 1 at a generic C and at C = 2, 3 integrals (section 6), of functional rank 2 against 1 at a generic C.",
             "Roots of the determinants where the search finds no more integrals: C = 2/15 and \
              C = 2/3.",
             "Every root of the determinants is rational: no other value of C has more integrals in \
@@ -1469,9 +1468,8 @@ fn henon_heiles_values_of_c_with_a_quartic_integral_at_b_sixteen_found_from_h_al
     expect_alone(
         "hh-values-quartic",
         &[
-            "For a generic C (searched at C = 7, no root): 3 integrals (section 2).",
-            "More integrals at C = 2, 4 integrals (section 4) and at C = 16/3, 4 integrals \
-             (section 6).",
+            "For a generic C (searched at C = 7, no root): 3 integrals (section 2), of functional rank 1.",
+            "More integrals at C = 2, 4 integrals (section 4), of functional rank 2 against 1 at a generic C and at C = 16/3, 4 integrals (section 6), of functional rank 2 against 1 at a generic C.",
             "The determinants' other 2 roots (complex, none real) hold no more integrals in \
              this space: at each, every block of the equations keeps its generic rank (shown \
              modulo the prime p = 4611686018427387847). No value of C but those above has more integrals in \
@@ -1491,9 +1489,8 @@ fn quartic_potentials_cases_found_from_h() {
     expect_alone(
         "qp-values-quadratic",
         &[
-            "For a generic a (searched at a = 7, no root): 2 integrals (section 2).",
-            "More integrals at a = 0, 3 integrals (section 4), at a = 2, 4 integrals (section 6) \
-             and at a = 6, 3 integrals (section 8).",
+            "For a generic a (searched at a = 7, no root): 2 integrals (section 2), of functional rank 1.",
+            "More integrals at a = 0, 3 integrals (section 4), of functional rank 2 against 1 at a generic a, at a = 2, 4 integrals (section 6), of functional rank 2 against 1 at a generic a and at a = 6, 3 integrals (section 8), of functional rank 2 against 1 at a generic a.",
             "Every root of the determinants is rational: no other value of a has more integrals \
              in this space.",
             "I3 = p_x² + 2x⁴",
@@ -1519,8 +1516,7 @@ fn quartic_potentials_parabolic_case_a_twelve_b_sixteen_is_quadratic_found_from_
     expect_alone(
         "qp-values-parabolic",
         &[
-            "More integrals at a = 0, 3 integrals (section 4) and at a = 12, 3 integrals \
-             (section 6).",
+            "More integrals at a = 0, 3 integrals (section 4), of functional rank 2 against 1 at a generic a and at a = 12, 3 integrals (section 6), of functional rank 2 against 1 at a generic a.",
             "Every root of the determinants is rational",
             "I3 = x p_x p_y − y p_x² + 4x⁴y + 8x²y³",
             "8 claims: 8 proved, 0 refuted",
@@ -1540,9 +1536,8 @@ fn quartic_potentials_quartic_case_a_six_b_eight_found_from_h() {
     expect_alone(
         "qp-values-quartic",
         &[
-            "For a generic a (searched at a = 7, no root): 3 integrals (section 2).",
-            "More integrals at a = 0, 6 integrals (section 4) and at a = 6, 4 integrals \
-             (section 6).",
+            "For a generic a (searched at a = 7, no root): 3 integrals (section 2), of functional rank 1.",
+            "More integrals at a = 0, 6 integrals (section 4), of functional rank 2 against 1 at a generic a and at a = 6, 4 integrals (section 6), of functional rank 2 against 1 at a generic a.",
             "The determinants' other 58 roots (not rational; 50 real) hold no more integrals \
              in this space: at each, every block of the equations keeps its generic rank",
             "No value of a but those above has more integrals in this space.",
@@ -1555,9 +1550,8 @@ fn quartic_potentials_quartic_case_a_six_b_eight_found_from_h() {
     expect_alone(
         "qp-values-b",
         &[
-            "For a generic b (searched at b = 7, no root): 3 integrals (section 2).",
-            "More integrals at b = 1, 6 integrals (section 4) and at b = 8, 4 integrals \
-             (section 6).",
+            "For a generic b (searched at b = 7, no root): 3 integrals (section 2), of functional rank 1.",
+            "More integrals at b = 1, 6 integrals (section 4), of functional rank 2 against 1 at a generic b and at b = 8, 4 integrals (section 6), of functional rank 2 against 1 at a generic b.",
             "The determinants' other 28 roots (not rational; 22 real) hold no more integrals \
              in this space",
             "13 claims: 13 proved, 0 refuted",
@@ -1572,8 +1566,7 @@ fn quartic_potentials_a_minus_six_has_no_second_integral() {
     let text = expect_alone(
         "qp-values-quartic-b1",
         &[
-            "More integrals at a = 0, 6 integrals (section 4), at a = 2, 9 integrals (section 6) \
-             and at a = 6, 6 integrals (section 8).",
+            "More integrals at a = 0, 6 integrals (section 4), of functional rank 2 against 1 at a generic a, at a = 2, 9 integrals (section 6), of functional rank 2 against 1 at a generic a and at a = 6, 6 integrals (section 8), of functional rank 2 against 1 at a generic a.",
             "The determinants' other 52 roots (not rational; 46 real) hold no more integrals \
              in this space",
         ],
@@ -1599,11 +1592,8 @@ fn harmonic_rotor_values_on_p_theta_one_are_its_resonances() {
     expect(
         "rotor-values",
         &[
-            "For a generic ω (searched at ω = 7, no root): 6 integrals (section 2).",
-            "More integrals at ω = −2, 14 integrals (section 4), at ω = −1, 20 integrals \
-             (section 6), at ω = −1/2, 12 integrals (section 8), at ω = 0, 10 integrals \
-             (section 10), at ω = 1/2, 12 integrals (section 12), at ω = 1, 20 integrals \
-             (section 14) and at ω = 2, 14 integrals (section 16).",
+            "For a generic ω (searched at ω = 7, no root): 6 integrals (section 2), of functional rank 3.",
+            "More integrals at ω = −2, 14 integrals (section 4), of functional rank 4 against 3 at a generic ω, at ω = −1, 20 integrals (section 6), of functional rank 4 against 3 at a generic ω, at ω = −1/2, 12 integrals (section 8), of functional rank 4 against 3 at a generic ω, at ω = 0, 10 integrals (section 10), of functional rank 3 as at a generic ω, at ω = 1/2, 12 integrals (section 12), of functional rank 4 against 3 at a generic ω, at ω = 1, 20 integrals (section 14), of functional rank 4 against 3 at a generic ω and at ω = 2, 14 integrals (section 16), of functional rank 4 against 3 at a generic ω.",
             "Every root of the determinants is rational: no other value of ω has more \
              integrals in this space.",
         ],
@@ -1611,9 +1601,7 @@ fn harmonic_rotor_values_on_p_theta_one_are_its_resonances() {
     expect(
         "rotor-values-ruled-out",
         &[
-            "More integrals at ω = −2, 6 integrals (section 4), at ω = −1, 6 integrals \
-             (section 6), at ω = 0, 4 integrals (section 8), at ω = 1, 6 integrals (section \
-             10) and at ω = 2, 6 integrals (section 12).",
+            "More integrals at ω = −2, 6 integrals (section 4), of functional rank 4 against 1 at a generic ω, at ω = −1, 6 integrals (section 6), of functional rank 4 against 1 at a generic ω, at ω = 0, 4 integrals (section 8), of functional rank 3 against 1 at a generic ω, at ω = 1, 6 integrals (section 10), of functional rank 4 against 1 at a generic ω and at ω = 2, 6 integrals (section 12), of functional rank 4 against 1 at a generic ω.",
             "The determinants' other 4 roots (not rational; 4 real) hold no more integrals in \
              this space: at each, every block of the equations keeps its generic rank",
             "No value of ω but those above has more integrals in this space.",
@@ -1628,10 +1616,7 @@ fn harmonic_rotor_moments_of_inertia_on_p_theta_one_are_its_resonances() {
     expect(
         "rotor-values-inertia",
         &[
-            "More integrals at I = −2, 14 integrals (section 4), at I = −1, 20 integrals \
-             (section 6), at I = −1/2, 12 integrals (section 8), at I = 1/2, 12 integrals \
-             (section 10), at I = 1, 20 integrals (section 12) and at I = 2, 14 integrals \
-             (section 14).",
+            "More integrals at I = −2, 14 integrals (section 4), of functional rank 4 against 3 at a generic I, at I = −1, 20 integrals (section 6), of functional rank 4 against 3 at a generic I, at I = −1/2, 12 integrals (section 8), of functional rank 4 against 3 at a generic I, at I = 1/2, 12 integrals (section 10), of functional rank 4 against 3 at a generic I, at I = 1, 20 integrals (section 12), of functional rank 4 against 3 at a generic I and at I = 2, 14 integrals (section 14), of functional rank 4 against 3 at a generic I.",
             "I = 0, a root of the determinants, is no value",
         ],
     );
@@ -1686,7 +1671,7 @@ fn dipole_rotor_no_frequency_adds_an_integral_at_degree_two() {
     let out = expect(
         "dipole-rotor-values-omega",
         &[
-            "For a generic ω (searched at ω = 7, no root): 4 integrals (section 2).",
+            "For a generic ω (searched at ω = 7, no root): 4 integrals (section 2), of functional rank 2.",
             "No rational value of ω has more integrals.",
             "Roots of the determinants where the search finds no more integrals: ω = 0.",
             "The determinants' other 4 roots (complex, none real) hold no more integrals in \
@@ -1749,8 +1734,8 @@ fn dipole_rotor_only_zero_field_adds_integrals() {
     expect(
         "dipole-rotor-values-epsilon",
         &[
-            "For a generic ε (searched at ε = 7, no root): 4 integrals (section 2).",
-            "More integrals at ε = 0, 9 integrals (section 4).",
+            "For a generic ε (searched at ε = 7, no root): 4 integrals (section 2), of functional rank 2.",
+            "More integrals at ε = 0, 9 integrals (section 4), of functional rank 4 against 2 at a generic ε.",
             "The determinants' other 2 roots (complex, none real) hold no more integrals in \
              this space",
             "No value of ε but those above has more integrals in this space.",
@@ -1792,9 +1777,8 @@ fn the_heavy_top_has_kovalevskaya_s_integral_at_i3_one_half_found_from_h_alone()
     expect(
         "heavy-top-values",
         &[
-            "For a generic I3 (searched at I3 = 7, no root): 10 integrals (section 2).",
-            "More integrals at I3 = 1/2, 11 integrals (section 4) and at I3 = 1, 20 integrals \
-             (section 6).",
+            "For a generic I3 (searched at I3 = 7, no root): 10 integrals (section 2), of functional rank 3.",
+            "More integrals at I3 = 1/2, 11 integrals (section 4), of functional rank 4 against 3 at a generic I3 and at I3 = 1, 20 integrals (section 6), of functional rank 4 against 3 at a generic I3.",
             "Roots of the determinants where the search finds no more integrals: I3 = 1/4, \
              I3 = 3/2, I3 = 2 and I3 = 4.",
             "I3 = 0, a root of the determinants, is no value: H, with a negative power of I3, \

@@ -36,13 +36,12 @@ fn henon_heiles(format: &str) -> String {
 fn henon_heiles_has_a_second_quadratic_integral_exactly_at_c_one_third_and_two_in_text() {
     let text = normalize(&henon_heiles("text"));
     assert!(
-        text.contains("For a generic C (searched at C = 7, no root): 2 integrals (section 2)."),
+        text.contains("For a generic C (searched at C = 7, no root): 2 integrals (section 2), of functional rank 1."),
         "{text}"
     );
     assert!(
         text.contains(
-            "More integrals at C = 1/3, 3 integrals (section 4) and at C = 2, 3 integrals \
-             (section 6)."
+            "More integrals at C = 1/3, 3 integrals (section 4), of functional rank 2 against 1 at a generic C and at C = 2, 3 integrals (section 6), of functional rank 2 against 1 at a generic C."
         ),
         "{text}"
     );
