@@ -7050,6 +7050,55 @@ fn search_at_fixed_values_restates_there_only_what_is_not_lifted() {
     );
 }
 
+/// A restatement at the fixed values whose number stands for a parameter's value is no integral
+/// for every value, and the integral stays unlifted: with `a = 0` and `k = 1, w = 7, m = 1`
+/// fixed, the motion along `y` gives `I2 = p_y² + 2y⁶ + 98y⁴ + 2y² = 2 T + 98 W`, where `98` is
+/// `2w²`; read with `w` symbolic, `{2 T + 98 W, H} ≠ 0`. The same integral is lifted through
+/// `2 Y` where the file names `Y = T + w² W`, the same at `w = 7` but an integral for every
+/// value.
+#[test]
+fn a_restatement_whose_number_stands_for_a_value_is_not_lifted_through() {
+    let text = "name = \"omega\"\n\
+        hamiltonian = \"(p_x^2 + p_y^2)/2 + x^4 + a*x^2*y^2 + k*y^2 + w^2*y^4 + m*y^6\"\n\
+        [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\", \"k\", \"w\", \"m\"]\n\
+        [[function]]\nname = \"T\"\nvalue = \"p_y^2/2 + k*y^2 + m*y^6\"\n\
+        [[function]]\nname = \"W\"\nvalue = \"y^4\"\n";
+    let with_y = format!("{text}[[function]]\nname = \"Y\"\nvalue = \"T + w^2*W\"\n");
+    let search = |name: &str, text: &str| {
+        let file = crate::scratch_text("discovery", name, text);
+        let file = file.to_str().expect("a UTF-8 path").to_string();
+        normalize(&superint_ok(&[
+            "search",
+            &file,
+            "--when",
+            "a = 0",
+            "--fix",
+            "k=1,w=7,m=1",
+            "--momenta-degree",
+            "2",
+            "--positions-degree",
+            "6",
+        ]))
+    };
+    let number = search("omega-number.toml", text);
+    for piece in [
+        "I2 = p_y² + 2y⁶ + 98y⁴ + 2y² = 2 T + 98 W",
+        "Restated at a = 0, k = 1, w = 7, m = 1, where it holds (not lifted): I2,",
+        "{I2, H} = 0 at a = 0, k = 1, w = 7, m = 1 [I2 proved] not lifted back to the parameters",
+    ] {
+        assert!(number.contains(piece), "no {piece:?} in:\n{number}");
+    }
+    assert!(!number.contains("lifted through"), "{number}");
+    let named = search("omega-named.toml", &with_y);
+    for piece in [
+        "I2 = p_y² + 2y⁶ + 98y⁴ + 2y² = 2 Y",
+        "{2 Y, H} = 0 at a = 0 [I2 proved]",
+    ] {
+        assert!(named.contains(piece), "no {piece:?} in:\n{named}");
+    }
+    assert!(!named.contains("(not lifted)"), "{named}");
+}
+
 /// The lines of a search's JSON restated in the file's functions: each line's label (`I2`,
 /// `A7 (k = 1)`) with its `"in_functions"`, where it has one.
 fn restated(json: &serde_json::Value) -> Vec<(String, serde_json::Value)> {
