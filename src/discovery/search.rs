@@ -1423,7 +1423,7 @@ impl Shared {
                 if let (Some(true), Some(Some(form))) =
                     (forms.through.get(k), forms.restated.get(k))
                 {
-                    return self.claim_through(&label, form);
+                    return self.claim_through(r, &label, form);
                 }
                 // On a level set `P = 0`: `{I, H} = Q·P`, the quotient `Q` shown above.
                 let (claim, written) = match (&r.on, &f.on_level) {
@@ -1464,16 +1464,18 @@ impl Shared {
 
     /// The claim of an integral `label` lifted through its restatement `form`
     /// ([`Restate::integral_for_every_value`]): `{form, H} = 0` for every value, at the
-    /// condition alone, proved, with the fixed values where `form` is the integral (`I2 at
-    /// a = 12, b = 16, lifted through it`).
-    fn claim_through(&self, label: &str, form: &Expr) -> Entry {
+    /// condition alone, proved, for every value of the parameters `r` fixed, with their values
+    /// where `form` is the integral (`proved for every a, b; it is I2 at a = 12, b = 16`).
+    fn claim_through(&self, r: &SearchResult, label: &str, form: &Expr) -> Entry {
         let fixed = self.held.at(true).map(|(text, _)| text).unwrap_or_default();
+        let params: Vec<Var> = r.parameters.iter().map(|(v, _)| *v).collect();
+        let names = parameter_names(&r.vars, &params);
         let c = ClaimResult::derived(
             label,
             &format!("{{{form}, H}} = 0"),
             true,
             Some(format!(
-                "{label} at {fixed}, lifted through it: proved for every value"
+                "proved for every {names}; it is {label} at {fixed}"
             )),
         )
         .at(self.held.at(false));

@@ -429,7 +429,7 @@ fn verdict_line(out: &mut Vec<String>, c: &ClaimResult) {
         }
     }
     if let Some(n) = &c.note {
-        out.push(format!("      {n}"));
+        out.extend(wrap(&format!("      {n}"), WRAP, "        "));
     }
     if let Some(u) = &c.undecided {
         out.extend(wrap(&format!("      {}", stopped(u)), WRAP, "        "));

@@ -1697,7 +1697,7 @@ fn dipole_rotor_energy_at_fixed_values_is_lifted_through_two_h() {
             "Restated at ω = 7, M = 1, I = 1, ε = 1, where it is found, and lifted through the \
              restatement: Φ3.",
             "{2 H, H} = 0 at ω = 7 [Φ3 proved] \
-             Φ3 at ω = 7, M = 1, I = 1, ε = 1, lifted through it: proved for every value",
+             proved for every M, I, ε; it is Φ3 at ω = 7, M = 1, I = 1, ε = 1",
         ],
     );
     for absent in [
@@ -7009,7 +7009,7 @@ fn search_at_fixed_values_restates_there_only_what_is_not_lifted() {
         "Restated at a = 12, b = 16, where it holds (not lifted): I3, with H and the file's \
          functions at these values.",
         "Restated at a = 12, b = 16, where it is found, and lifted through the restatement: I2.",
-        "{2 H, H} = 0 [I2 proved] I2 at a = 12, b = 16, lifted through it: proved for every value",
+        "{2 H, H} = 0 [I2 proved] proved for every a, b; it is I2 at a = 12, b = 16",
         "{I3, H} = 0 at a = 12, b = 16 [I3 proved] not lifted back to the parameters",
     ] {
         assert!(
@@ -7097,6 +7097,30 @@ fn a_restatement_whose_number_stands_for_a_value_is_not_lifted_through() {
         assert!(named.contains(piece), "no {piece:?} in:\n{named}");
     }
     assert!(!named.contains("(not lifted)"), "{named}");
+}
+
+/// The claim of an integral lifted through its restatement says for which parameters it is
+/// proved and at which values it is the integral, wrapped as the report's other lines are
+/// (it ran past the line at long fixed values): the Euler top's quadratic integrals at three
+/// unequal moments.
+#[test]
+fn a_claim_lifted_through_its_restatement_says_where_wrapped() {
+    let out = superint_ok_line(
+        "search systems/euler-top.toml --poisson-degree 2 \
+         --fix I1=100001/100003,I2=200003/200017,I3=300007/300017",
+    );
+    for label in ["J2", "J3"] {
+        let note = format!(
+            "[{label} proved] proved for every I1, I2, I3; it is {label} at I1 = 100001/100003, \
+             I2 = 200003/200017, I3 = 300007/300017"
+        );
+        assert!(normalize(&out).contains(&note), "no {note:?} in:\n{out}");
+    }
+    let notes: Vec<&str> = (out.lines())
+        .filter(|l| l.contains("proved for every I1"))
+        .collect();
+    assert_eq!(notes.len(), 2, "{out}");
+    assert!(notes.iter().all(|l| l.chars().count() <= 96), "{out}");
 }
 
 /// The lines of a search's JSON restated in the file's functions: each line's label (`I2`,
