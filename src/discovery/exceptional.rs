@@ -55,6 +55,10 @@ pub fn exceptional_values_report(
     let graph_over = searches_found
         .map(|r| level_set_graph_variable(system.space(), r))
         .collect::<Option<Vec<_>>>();
+    // Elsewhere each integral found is one remainder modulo `P` of many functions equal on the
+    // level set (`P` itself is 0 there), whose ranks in the whole phase space differ: those
+    // of the remainders are shown, and no value is said to hold functionally new integrals.
+    let ranks_on_level_set = found.generic.on.is_none() || graph_over.is_some();
     let ranks_where = match graph_over.as_ref().and_then(|v| v.first()) {
         Some(&v) => format!(
             "The functional ranks below are those on the level set, a graph over the phase \
@@ -62,7 +66,8 @@ pub fn exceptional_values_report(
             vars.variable(v).unicode()
         ),
         None => "The functional ranks below are those of the functions found in the whole \
-                 phase space, not on the level set."
+                 phase space, remainders modulo the level set's polynomial: they do not say \
+                 which values hold functionally new integrals on the level set."
             .to_string(),
     };
     if !on.is_empty() {
@@ -121,7 +126,7 @@ pub fn exceptional_values_report(
     // The values a physicist asks for: those whose integrals are not all functions of the
     // generic ones.
     let new: Vec<String> = (found.values.iter())
-        .filter(|v| v.functionally_new(generic_rank))
+        .filter(|v| ranks_on_level_set && v.functionally_new(generic_rank))
         .map(|v| format!("`{t} = {}`", shown(&v.value)))
         .collect();
     let ranks = std::iter::once(generic_rank).chain(found.values.iter().map(|v| &v.rank));
@@ -130,7 +135,10 @@ pub fn exceptional_values_report(
             "Functionally new integrals, a functional rank above the generic one, at {}.",
             listed(&new)
         )));
-    } else if !found.values.is_empty() && ranks.clone().all(BoundedRank::is_exact) {
+    } else if ranks_on_level_set
+        && !found.values.is_empty()
+        && ranks.clone().all(BoundedRank::is_exact)
+    {
         entries.push(Entry::Text(format!(
             "No value of `{t}` has functionally new integrals: none has a functional rank above \
              the generic one."

@@ -140,7 +140,8 @@
 //!                   "dimension", "section", "functional_rank", "functional_rank_exact" } ]
 //!                   (the rational values with more integrals, increasing, each with the
 //!                   section of the search there; a rank larger than the generic one's, that
-//!                   exact, means functionally new integrals), "not_exceptional": [values] (the
+//!                   exact, means functionally new integrals, off a level set or on one the
+//!                   text says the ranks are on), "not_exceptional": [values] (the
 //!                   rational roots of the determinants where the search found no more),
 //!                   "unexamined": ascii | null (the polynomial in the parameter whose
 //!                   roots, irrational and complex, were not ruled out: every minor tried

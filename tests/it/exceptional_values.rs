@@ -1058,3 +1058,25 @@ fn harmonic_rotor_resonance_on_p_theta_one_has_functionally_new_integrals() {
         "{text}"
     );
 }
+
+/// On `A = M·γ = 0`, whose leading monomial is no phase variable, each integral found is one
+/// remainder modulo `A` of many functions equal on the level set, whose ranks in the whole
+/// phase space differ (`A` itself is 0 there): the ranks shown are the remainders', said so,
+/// and no value is called functionally new, nor is it said that none is.
+#[test]
+fn on_the_area_level_the_remainders_ranks_name_no_value_functionally_new() {
+    let find = "search systems/heavy-top.toml --find-values I3 --poisson-degree 3";
+    let args = [&find.split(' ').collect::<Vec<_>>()[..], &["--on", "A = 0"]].concat();
+    let text = normalize(&superint_ok(&args)).replace('\n', " ");
+    assert!(
+        text.contains(
+            "The functional ranks below are those of the functions found in the whole phase \
+             space, remainders modulo the level set's polynomial: they do not say which values \
+             hold functionally new integrals on the level set."
+        ),
+        "{text}"
+    );
+    assert!(text.contains("More integrals at I3 = 1/4"), "{text}");
+    assert!(!text.contains("unctionally new integrals,"), "{text}");
+    assert!(!text.contains("has functionally new integrals"), "{text}");
+}

@@ -219,7 +219,9 @@ pub struct ExceptionalValue {
 impl ExceptionalValue {
     /// Whether the value holds functionally new integrals: its basis is certified of larger
     /// functional rank than the generic one, whose rank is exact (a lower bound there would
-    /// leave it open).
+    /// leave it open). Decided so off a level set, or on one [`level_set_graph_variable`]
+    /// gives a variable for; elsewhere the ranks are those of remainders modulo its polynomial
+    /// in the whole phase space, which functions equal on the level set do not share.
     pub fn functionally_new(&self, generic: &BoundedRank) -> bool {
         generic.is_exact() && self.rank.rank() > generic.rank()
     }
