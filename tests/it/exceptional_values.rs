@@ -1080,3 +1080,43 @@ fn on_the_area_level_the_remainders_ranks_name_no_value_functionally_new() {
     assert!(!text.contains("unctionally new integrals,"), "{text}");
     assert!(!text.contains("has functionally new integrals"), "{text}");
 }
+
+/// Six free particles with the potential `k a b c d e f`, quadratic in the momenta and of no
+/// degree in the positions: for a generic `k` the constant alone (rank 0); at `k = 0` the 28
+/// polynomials in the momenta, whose rank 6 has (28 − 6)(12 − 6) = 132 minors bordering its
+/// nonzero one, past `MAX_RANK_MINORS`: said to be at least 6, which is still above the
+/// generic exact 0, so the value is functionally new.
+#[test]
+fn a_rank_past_the_bordering_minors_limit_is_a_lower_bound_and_still_decides() {
+    let text = "name = \"six free\"\nhamiltonian = \"(p_a^2 + p_b^2 + p_c^2 + p_d^2 + p_e^2 \
+                + p_f^2)/2 + k*a*b*c*d*e*f\"\n[phase_space]\ncoordinates = [\"a\", \"b\", \
+                \"c\", \"d\", \"e\", \"f\"]\nparameters = [\"k\"]\n";
+    let file = scratch_text("exceptional-values", "six-free.toml", text);
+    let find = ["search", file.to_str().unwrap(), "--find-values", "k"];
+    let args = [
+        &find[..],
+        &["--momenta-degree", "2", "--positions-degree", "0"],
+    ]
+    .concat();
+    let json = superint_json(&args);
+    let found = &json["exceptional_values"][0];
+    assert_eq!(found["generic"]["functional_rank"], 0);
+    assert_eq!(found["generic"]["functional_rank_exact"], true);
+    let zero = &found["values"][0];
+    assert_eq!(
+        (&zero["value"], &zero["dimension"]),
+        (&"0".into(), &28.into())
+    );
+    assert_eq!(zero["functional_rank"], 6);
+    assert_eq!(zero["functional_rank_exact"], false);
+    let text = normalize(&superint_ok(&args)).replace('\n', " ");
+    for said in [
+        "More integrals at k = 0, 28 integrals (section 4), of functional rank at least 6 \
+         against 0 at a generic k.",
+        "Functionally new integrals, a functional rank above the generic one, at k = 0.",
+        "said \"at least\" is certified from below alone: more than 64 minors border its \
+         nonzero one.",
+    ] {
+        assert!(text.contains(said), "{said}\n{text}");
+    }
+}
