@@ -1693,9 +1693,9 @@ fn dipole_rotor_energy_at_fixed_values_is_lifted_through_two_h() {
         "dipole-rotor-values-omega",
         &[
             "3 of the 4 basis elements hold for every value as found and 1 through its \
-             restatement (proved symbolically).",
+             restatement in the file's functions (proved symbolically).",
             "Restated at ω = 7, M = 1, I = 1, ε = 1, where it is found, and lifted through the \
-             restatement: Φ3, with the file's functions as written.",
+             restatement: Φ3.",
             "{2 H, H} = 0 at ω = 7 [Φ3 proved] \
              proved for every M, I, ε; it is Φ3 at ω = 7, M = 1, I = 1, ε = 1",
         ],
@@ -3673,7 +3673,8 @@ fn a_searchs_labels_and_suggestions_do_not_repeat_the_systems_own() {
     assert!(
         text.contains(
             "nothing is lifted; 2 of the 4 basis elements hold for every value as found and 1 \
-             through its restatement (proved symbolically), the others at these values only"
+             through its restatement in the file's functions (proved symbolically), the others \
+             at these values only"
         ),
         "{text}"
     );
@@ -7002,12 +7003,12 @@ fn search_at_fixed_values_restates_there_only_what_is_not_lifted() {
     for piece in [
         "I2 = p_x² + p_y² + 2x⁴ + 24x²y² + 32y⁴ = 2 H",
         "so nothing is lifted; 1 of the 3 basis elements holds for every value as found and 1 \
-         through its restatement (proved symbolically), the others at these values only.",
+         through its restatement in the file's functions (proved symbolically), the others at \
+         these values only.",
         "What is not lifted holds at these values",
         "Restated at a = 12, b = 16, where it holds (not lifted): I3, with H and the file's \
          functions at these values.",
-        "Restated at a = 12, b = 16, where it is found, and lifted through the restatement: I2, \
-         with the file's functions as written.",
+        "Restated at a = 12, b = 16, where it is found, and lifted through the restatement: I2.",
         "{2 H, H} = 0 [I2 proved] proved for every a, b; it is I2 at a = 12, b = 16",
         "{I3, H} = 0 at a = 12, b = 16 [I3 proved] not lifted back to the parameters",
     ] {
@@ -7384,86 +7385,4 @@ fn quartic_potentials_search(fix: &str, momenta: u32, positions: u32) -> String 
         "search systems/quartic-potentials.toml --fix {fix} --momenta-degree {momenta} \
          --positions-degree {positions} --trig-degree 0"
     )))
-}
-
-/// Every search says the functional rank of its basis beside its dimension, in the text and
-/// in JSON: the harmonic rotor at the resonance `p_θ = Iω` has 20 integrals of rank 4 where
-/// the condition holds (maximal on that five-dimensional level set: with `p_θ`, 5 = 2·3 − 1
-/// in the whole phase space), the same on the level set `p_θ = 1` at `ω = 1`, and off the
-/// resonance 9 integrals of rank 4, a rank below the dimension and not maximal.
-#[test]
-fn every_search_says_the_functional_rank_of_its_basis() {
-    let rotor = "systems/harmonic-rotor.toml";
-    let resonance = [
-        "search",
-        rotor,
-        "--when",
-        "p_theta = I*omega",
-        "--no-timings",
-    ];
-    let text = superint_ok(&resonance);
-    assert!(
-        normalize(&text).contains(
-            "Dimension of the space of integrals: 20. By degree in the momenta: ≤ 0: 1, ≤ 1: 6, \
-             ≤ 2: 20. Functional rank: 4 where the condition holds (certified: a 4 × 4 minor \
-             of the Jacobian is nonzero, the 32 minors bordering it vanish)."
-        ),
-        "{text}"
-    );
-    let json = superint_json(&resonance);
-    let found = &json["searches"][0];
-    assert_eq!(found["dimension"], 20);
-    assert_eq!(found["functional_rank"], 4);
-    assert_eq!(found["functional_rank_exact"], true);
-    let on = [
-        "search",
-        rotor,
-        "--on",
-        "p_theta = 1",
-        "--fix",
-        "omega=1",
-        "--no-timings",
-    ];
-    let text = superint_ok(&on);
-    assert!(
-        normalize(&text).contains("≤ 2: 20. Functional rank: 4 on the level set (certified:"),
-        "{text}"
-    );
-    let generic = superint_json(&["search", rotor, "--no-timings"]);
-    let found = &generic["searches"][0];
-    assert_eq!(found["dimension"], 9);
-    assert_eq!(found["functional_rank"], 4);
-}
-
-/// The prose keeps a value with what it is the value of where the two fit on a line: the
-/// Euler top's `I3 = 300007/300017` in the parameters' sentence and in each claim's note,
-/// and `≤ 2: 3` in the dimensions by degree; no line of the report is wider than the wrap.
-#[test]
-fn the_prose_keeps_a_value_with_its_name_on_one_line() {
-    let fix = "I1=100001/100003,I2=200003/200017,I3=300007/300017";
-    let args = [
-        "search",
-        "systems/euler-top.toml",
-        "--poisson-degree",
-        "4",
-        "--fix",
-        fix,
-    ];
-    let text = superint_ok(&[&args[..], &["--no-timings"]].concat());
-    let lines: Vec<&str> = text.lines().collect();
-    assert!(lines.iter().all(|l| !l.ends_with(" =")), "{text}");
-    assert!(
-        lines.iter().any(|l| l.starts_with("I3 = 300007/300017;")),
-        "{text}"
-    );
-    assert_eq!(
-        lines
-            .iter()
-            .filter(|l| l.trim_start() == "I3 = 300007/300017")
-            .count(),
-        5,
-        "{text}"
-    );
-    assert!(text.contains("≤ 2: 3, ≤ 3: 3"), "{text}");
-    assert!(lines.iter().all(|l| l.chars().count() <= 96), "{text}");
 }
