@@ -99,18 +99,14 @@ pub fn exceptional_values_report(
         "For a generic `{t}` (searched at `{t} = {}`, no root): {}, of functional rank {}.",
         shown(&told.generic_value),
         dimension(0, &found.generic),
-        rank_shown(generic_rank)
+        generic_rank
     )));
     let values: Vec<String> = (found.values.iter().enumerate())
         .map(|(k, v)| {
             let same = v.rank.rank() == generic_rank.rank();
             let rank = match same && v.rank.is_exact() && generic_rank.is_exact() {
                 true => format!("{} as at a generic `{t}`", v.rank.rank()),
-                false => format!(
-                    "{} against {} at a generic `{t}`",
-                    rank_shown(&v.rank),
-                    rank_shown(generic_rank),
-                ),
+                false => format!("{} against {} at a generic `{t}`", v.rank, generic_rank,),
             };
             format!(
                 "at `{t} = {}`, {}, of functional rank {rank}",
@@ -300,14 +296,6 @@ pub fn exceptional_values_report(
         summary: SummaryKind::Searches,
         seconds,
         caller,
-    }
-}
-
-/// A functional rank as the prose says it: `2`, or `at least 2` where it is a lower bound.
-fn rank_shown(rank: &BoundedRank) -> String {
-    match rank {
-        BoundedRank::Exact(cert) => cert.rank.to_string(),
-        BoundedRank::AtLeast(rank) => format!("at least {rank}"),
     }
 }
 

@@ -259,6 +259,16 @@ impl BoundedRank {
     }
 }
 
+/// The rank as prose says it: `2`, or `at least 2` where it is a lower bound.
+impl std::fmt::Display for BoundedRank {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            BoundedRank::Exact(cert) => write!(f, "{}", cert.rank),
+            BoundedRank::AtLeast(rank) => write!(f, "at least {rank}"),
+        }
+    }
+}
+
 /// [`rank`], the upper bound certified only where the rank equals the number of functions or
 /// of coordinates or at most `max_minors` minors border the nonzero one: past that, the
 /// rank is said to be at least the lower bound ([`BoundedRank::AtLeast`]).
