@@ -979,6 +979,13 @@ struct ShownForms {
     at_fixed: Option<(brackets::Condition, String)>,
 }
 
+impl ShownForms {
+    /// The number of basis integrals lifted through their restatements.
+    fn lifted_through(&self) -> usize {
+        self.through.iter().filter(|&&t| t).count()
+    }
+}
+
 /// What the two sections of a search's report share: where the integrals hold, the names of
 /// the parameters kept symbolic, the letters of the integrals' labels and which integrals
 /// are shown.
@@ -1073,7 +1080,7 @@ impl Shared {
         );
         entries.extend(hamiltonian_note(system, options, self.caller)?);
         // Those lifted through their restatements count with those that hold as found.
-        let through = Self::lifted_through(forms);
+        let through = forms.lifted_through();
         let for_every_value = (0..r.basis.len())
             .filter(|&i| r.for_every_value(i).is_some())
             .count()
@@ -1251,11 +1258,6 @@ impl Shared {
             through,
             at_fixed,
         })
-    }
-
-    /// The number of basis integrals lifted through their restatements ([`ShownForms`]).
-    fn lifted_through(forms: &ShownForms) -> usize {
-        forms.through.iter().filter(|&&t| t).count()
     }
 
     /// Section 2: the basis (or the new part; with symbolic parameters, its generators) as
