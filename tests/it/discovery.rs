@@ -263,6 +263,27 @@ const COMMANDS: &[(&str, &str)] = &[
          --momenta-degree 2 --positions-degree 2 --trig-degree 2",
     ),
     (
+        "quadrupole-rotor-search",
+        "superint search systems/quadrupole-rotor.toml --fix M=2,omega=3,I=5,epsilon=7 \
+         --momenta-degree 4 --positions-degree 4 --trig-degree 4 --new-only",
+    ),
+    (
+        "quadrupole-rotor-values-epsilon",
+        "superint search systems/quadrupole-rotor.toml --find-values epsilon \
+         --fix M=1,I=1,omega=1 --momenta-degree 2 --positions-degree 2 --trig-degree 2",
+    ),
+    (
+        "quadrupole-rotor-vanishing-frequency",
+        "superint search systems/quadrupole-rotor.toml --when 'epsilon = M*omega^2/2' \
+         --fix M=1,omega=1,I=1 --momenta-degree 3 --positions-degree 3 --trig-degree 3 \
+         --new-only",
+    ),
+    (
+        "quadrupole-rotor-values-omega",
+        "superint search systems/quadrupole-rotor.toml --find-values omega \
+         --fix M=1,I=1,epsilon=1 --momenta-degree 2 --positions-degree 2 --trig-degree 2",
+    ),
+    (
         "kepler",
         "superint search systems/kepler.toml --momenta-degree 2 --positions-degree 2 \
          --trig-degree 1 --laurent",
@@ -1741,6 +1762,118 @@ fn dipole_rotor_only_zero_field_adds_integrals() {
             "No value of ε but those above has more integrals in this space.",
         ],
     );
+}
+
+/// Section 32: the quadrupole rotor's `J = x p_y − y p_x + p_θ` is conserved, the quadrupole's
+/// torque `T = −∂V/∂θ = −4ε ξ1 ξ2` (in the body frame) moves `L` and `p_θ` equal and opposite,
+/// and the false neighbours are refuted with their residuals: `L`, `p_θ`, the oscillator's
+/// energy with the coupling, and the resonant `Z e^{−iθ}` of the harmonic rotor.
+#[test]
+fn quadrupole_rotor_conserves_j_and_refutes_the_orbital_momentum() {
+    let out = normalize(&superint_ok(&[
+        "check",
+        "systems/quadrupole-rotor.toml",
+        "--no-timings",
+    ]));
+    for piece in [
+        "{J, H} = 0 [rotation proved]",
+        "{p_θ, H} = T [torque proved]",
+        "{L, H} = −T [torque proved]",
+        "T = −4ε ξ1 ξ2 [torque proved]",
+        "H_osc + V = (π1² + π2²)/(2M) + (Mω² + 2ε) ξ1²/2 + (Mω² − 2ε) ξ2²/2 [body-frame proved]",
+        "H = (π1² + π2²)/(2M) + (Mω² + 2ε) ξ1²/2 + (Mω² − 2ε) ξ2²/2 + (J − L)²/(2I) \
+         [body-frame proved]",
+        "{Z, H} = iω Z − 2ε e^{2iθ} (x − iy) [ladder proved]",
+        "{L, H} = 0 [false-orbital-momentum refuted, as expected] \
+         residual lhs − rhs = −4εxy + 8εxy cos²θ + (−4εx² + 4εy²) cos θ sin θ = −T",
+        "{p_θ, H} = −T [false-wrong-sign-torque refuted, as expected]",
+        "{H_osc + V, H} = 0 [false-oscillator-energy refuted, as expected]",
+        "{Z e^{−iθ}, H} = 0 at p_θ = Iω [false-resonant refuted, as expected]",
+        "22 claims in 1 file: 16 proved, 6 refuted; all as expected",
+    ] {
+        assert!(out.contains(&normalize(piece)), "no {piece:?} in:\n{out}");
+    }
+}
+
+/// Section 32: at generic values, every integral of the quadrupole rotor of degree ≤ 4 in the
+/// momenta and the positions and of trigonometric order ≤ 4 is a polynomial in `H` and `J`: the
+/// space's dimension is the number of products `H^a J^b` of momenta degree `2a + b ≤ 4`.
+#[test]
+fn quadrupole_rotor_has_no_integral_but_h_and_j_to_degree_four() {
+    let products = (0..=2).map(|a| 4 - 2 * a + 1).sum::<usize>();
+    expect(
+        "quadrupole-rotor-search",
+        &[
+            &format!("Dimension of the space of integrals: {products}."),
+            "Known integrals in the space: H, J.",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
+}
+
+/// Section 32: the field strengths where a co-rotating frequency `ω² ± 2ε/M` vanishes,
+/// `ε = ±Mω²/2` (`±1/2` at `M = ω = 1`), are roots of the determinants at degree 2, and the
+/// search there finds no more integrals; `ε = 0`, the harmonic rotor, is the one value with
+/// more, functionally new, and the irrational roots are ruled out.
+#[test]
+fn quadrupole_rotor_vanishing_co_rotating_frequency_adds_no_integral() {
+    let (mass, omega) = (1, 1);
+    let vanishing = format!("{}/2", mass * omega * omega);
+    let out = expect(
+        "quadrupole-rotor-values-epsilon",
+        &[
+            "For a generic ε (searched at ε = 7, no root): 4 integrals (section 2), of functional rank 2.",
+            "More integrals at ε = 0, 9 integrals (section 4), of functional rank 4 against 2 at a generic ε.",
+            &format!(
+                "Roots of the determinants where the search finds no more integrals: \
+                 ε = −{vanishing} and ε = {vanishing}."
+            ),
+            "hold no more integrals in this space: at each, every block of the equations keeps \
+             its generic rank",
+            "No value of ε but those above has more integrals in this space.",
+        ],
+    );
+    assert!(!out.contains("More integrals at ε = 1/2"), "{out}");
+}
+
+/// Section 32: on `ε = Mω²/2`, where the frequency across the axis in the turning frame,
+/// `ω² − 2ε/M`, vanishes, every integral of degree ≤ 3 (momenta, positions, order) is a
+/// polynomial in `H` and `J`, lifted to every `M`, `ω`, `I`: the products `H^a J^b`,
+/// `2a + b ≤ 3`, and nothing new.
+#[test]
+fn quadrupole_rotor_with_a_vanishing_turning_frequency_has_only_h_and_j() {
+    let products = (0..=1).map(|a| 3 - 2 * a + 1).sum::<usize>();
+    expect(
+        "quadrupole-rotor-vanishing-frequency",
+        &[
+            "Integrals of the quadrupole rotor at ε = Mω²/2",
+            "each basis element was lifted back to symbolic parameters by homogeneity and \
+             proved symbolically.",
+            &format!("Dimension of the space of integrals: {products}."),
+            "Known integrals in the space: H, J.",
+            "None: the known integrals generate every integral in the space.",
+            &format!("{{Φ, H}} = 0 for the {products} basis elements at ε = Mω²/2 [basis proved]"),
+        ],
+    );
+}
+
+/// Section 32: no frequency `ω` adds an integral to the quadrupole rotor at degree 2 (at
+/// `ε = M = I = 1`): `ω = 0`, a root, holds nothing more, and the irrational roots, among them
+/// `ω = ±√2` where a co-rotating frequency vanishes, are ruled out.
+#[test]
+fn quadrupole_rotor_no_frequency_adds_an_integral_at_degree_two() {
+    let out = expect(
+        "quadrupole-rotor-values-omega",
+        &[
+            "For a generic ω (searched at ω = 7, no root): 4 integrals (section 2), of functional rank 2.",
+            "No rational value of ω has more integrals.",
+            "Roots of the determinants where the search finds no more integrals: ω = 0.",
+            "hold no more integrals in this space: at each, every block of the equations keeps \
+             its generic rank",
+            "No value of ω has more integrals in this space.",
+        ],
+    );
+    assert!(!out.contains("but those above"), "{out}");
 }
 
 /// The file's integrals hold at their cases and at no neighbour: each claim proved, each
