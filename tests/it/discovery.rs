@@ -749,6 +749,45 @@ fn expect(name: &str, pieces: &[&str]) -> String {
     out
 }
 
+/// How many products `H^a J^b` of an `H` quadratic and a `J` linear in the momenta have
+/// momenta degree `2a + b ≤ degree`: the dimension of a space whose integrals are theirs alone.
+fn products_of_h_and_j(degree: usize) -> usize {
+    (0..=degree / 2).map(|a| degree - 2 * a + 1).sum()
+}
+
+/// Runs the named search (with `--new-only`, of momenta degree `degree`) and asserts that its
+/// integrals are the products of `H` and `J` alone, and that it prints each of `more`.
+#[track_caller]
+fn expect_h_and_j_alone(name: &str, degree: usize, more: &[&str]) -> String {
+    let products = products_of_h_and_j(degree);
+    let dimension = format!("Dimension of the space of integrals: {products}.");
+    let mut pieces = vec![
+        dimension.as_str(),
+        "Known integrals in the space: H, J.",
+        "None: the known integrals generate every integral in the space.",
+    ];
+    pieces.extend_from_slice(more);
+    expect(name, &pieces)
+}
+
+/// Runs the named `--find-values` search and asserts that it prints each of `pieces` and that
+/// the determinants' roots it did not search at (irrational or complex) are ruled out.
+#[track_caller]
+fn expect_the_other_roots_ruled_out(name: &str, pieces: &[&str]) -> String {
+    let ruled_out = "hold no more integrals in this space: at each, every block of the \
+                     equations keeps its generic rank";
+    expect(name, &[pieces, &[ruled_out]].concat())
+}
+
+/// Checks the system file and asserts that its report prints each of `pieces`.
+#[track_caller]
+fn check_prints(file: &str, pieces: &[&str]) {
+    let out = normalize(&superint_ok(&["check", file, "--no-timings"]));
+    for piece in pieces {
+        assert!(out.contains(&normalize(piece)), "no {piece:?} in:\n{out}");
+    }
+}
+
 #[test]
 fn results_md_quotes_every_command() {
     let note = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/results.md"))
@@ -1648,24 +1687,20 @@ fn harmonic_rotor_moments_of_inertia_on_p_theta_one_are_its_resonances() {
 /// dipole's torque `ε(x sin θ − y cos θ)` moves them, equal and opposite.
 #[test]
 fn dipole_rotor_conserves_j_and_refutes_the_orbital_momentum() {
-    let out = normalize(&superint_ok(&[
-        "check",
+    check_prints(
         "systems/dipole-rotor.toml",
-        "--no-timings",
-    ]));
-    for piece in [
-        "{J, H} = 0 [rotation proved]",
-        "{L, H} = −ε(x sin θ − y cos θ) [torque proved]",
-        "{Z, H} = iω Z − ε e^{iθ} [ladder proved]",
-        "{L, H} = 0 [false-orbital-momentum refuted, as expected] \
-         residual lhs − rhs = εy cos θ − εx sin θ",
-        "{p_θ, H} = 0 [false-rotor-momentum refuted, as expected]",
-        "{Z e^{−iθ}, H} = 0 at p_θ = Iω [false-resonant refuted, as expected] \
-         residual lhs − rhs = −ε",
-        "16 claims in 1 file: 12 proved, 4 refuted; all as expected",
-    ] {
-        assert!(out.contains(&normalize(piece)), "no {piece:?} in:\n{out}");
-    }
+        &[
+            "{J, H} = 0 [rotation proved]",
+            "{L, H} = −ε(x sin θ − y cos θ) [torque proved]",
+            "{Z, H} = iω Z − ε e^{iθ} [ladder proved]",
+            "{L, H} = 0 [false-orbital-momentum refuted, as expected] \
+             residual lhs − rhs = εy cos θ − εx sin θ",
+            "{p_θ, H} = 0 [false-rotor-momentum refuted, as expected]",
+            "{Z e^{−iθ}, H} = 0 at p_θ = Iω [false-resonant refuted, as expected] \
+             residual lhs − rhs = −ε",
+            "16 claims in 1 file: 12 proved, 4 refuted; all as expected",
+        ],
+    );
 }
 
 /// Section 31: at generic values, every integral of degree ≤ 4 in the momenta and the
@@ -1673,15 +1708,7 @@ fn dipole_rotor_conserves_j_and_refutes_the_orbital_momentum() {
 /// dimension is the number of products `H^a J^b` of momenta degree `2a + b ≤ 4`.
 #[test]
 fn dipole_rotor_has_no_integral_but_h_and_j_to_degree_four() {
-    let products = (0..=2).map(|a| 4 - 2 * a + 1).sum::<usize>();
-    expect(
-        "dipole-rotor-search",
-        &[
-            &format!("Dimension of the space of integrals: {products}."),
-            "Known integrals in the space: H, J.",
-            "None: the known integrals generate every integral in the space.",
-        ],
-    );
+    expect_h_and_j_alone("dipole-rotor-search", 4, &[]);
 }
 
 /// Section 31: no frequency `ω` adds an integral at degree 2 (`ω = 0`, a root, holds nothing
@@ -1770,29 +1797,25 @@ fn dipole_rotor_only_zero_field_adds_integrals() {
 /// energy with the coupling, and the resonant `Z e^{−iθ}` of the harmonic rotor.
 #[test]
 fn quadrupole_rotor_conserves_j_and_refutes_the_orbital_momentum() {
-    let out = normalize(&superint_ok(&[
-        "check",
+    check_prints(
         "systems/quadrupole-rotor.toml",
-        "--no-timings",
-    ]));
-    for piece in [
-        "{J, H} = 0 [rotation proved]",
-        "{p_θ, H} = T [torque proved]",
-        "{L, H} = −T [torque proved]",
-        "T = −4ε ξ1 ξ2 [torque proved]",
-        "H_osc + V = (π1² + π2²)/(2M) + (Mω² + 2ε) ξ1²/2 + (Mω² − 2ε) ξ2²/2 [body-frame proved]",
-        "H = (π1² + π2²)/(2M) + (Mω² + 2ε) ξ1²/2 + (Mω² − 2ε) ξ2²/2 + (J − L)²/(2I) \
-         [body-frame proved]",
-        "{Z, H} = iω Z − 2ε e^{2iθ} (x − iy) [ladder proved]",
-        "{L, H} = 0 [false-orbital-momentum refuted, as expected] \
-         residual lhs − rhs = −4εxy + 8εxy cos²θ + (−4εx² + 4εy²) cos θ sin θ = −T",
-        "{p_θ, H} = −T [false-wrong-sign-torque refuted, as expected]",
-        "{H_osc + V, H} = 0 [false-oscillator-energy refuted, as expected]",
-        "{Z e^{−iθ}, H} = 0 at p_θ = Iω [false-resonant refuted, as expected]",
-        "22 claims in 1 file: 16 proved, 6 refuted; all as expected",
-    ] {
-        assert!(out.contains(&normalize(piece)), "no {piece:?} in:\n{out}");
-    }
+        &[
+            "{J, H} = 0 [rotation proved]",
+            "{p_θ, H} = T [torque proved]",
+            "{L, H} = −T [torque proved]",
+            "T = −4ε ξ1 ξ2 [torque proved]",
+            "H_osc + V = (π1² + π2²)/(2M) + (Mω² + 2ε) ξ1²/2 + (Mω² − 2ε) ξ2²/2 [body-frame proved]",
+            "H = (π1² + π2²)/(2M) + (Mω² + 2ε) ξ1²/2 + (Mω² − 2ε) ξ2²/2 + (J − L)²/(2I) \
+             [body-frame proved]",
+            "{Z, H} = iω Z − 2ε e^{2iθ} (x − iy) [ladder proved]",
+            "{L, H} = 0 [false-orbital-momentum refuted, as expected] \
+             residual lhs − rhs = −4εxy + 8εxy cos²θ + (−4εx² + 4εy²) cos θ sin θ = −T",
+            "{p_θ, H} = −T [false-wrong-sign-torque refuted, as expected]",
+            "{H_osc + V, H} = 0 [false-oscillator-energy refuted, as expected]",
+            "{Z e^{−iθ}, H} = 0 at p_θ = Iω [false-resonant refuted, as expected]",
+            "22 claims in 1 file: 16 proved, 6 refuted; all as expected",
+        ],
+    );
 }
 
 /// Section 32: at generic values, every integral of the quadrupole rotor of degree ≤ 4 in the
@@ -1800,15 +1823,7 @@ fn quadrupole_rotor_conserves_j_and_refutes_the_orbital_momentum() {
 /// space's dimension is the number of products `H^a J^b` of momenta degree `2a + b ≤ 4`.
 #[test]
 fn quadrupole_rotor_has_no_integral_but_h_and_j_to_degree_four() {
-    let products = (0..=2).map(|a| 4 - 2 * a + 1).sum::<usize>();
-    expect(
-        "quadrupole-rotor-search",
-        &[
-            &format!("Dimension of the space of integrals: {products}."),
-            "Known integrals in the space: H, J.",
-            "None: the known integrals generate every integral in the space.",
-        ],
-    );
+    expect_h_and_j_alone("quadrupole-rotor-search", 4, &[]);
 }
 
 /// Section 32: the field strengths where a co-rotating frequency `ω² ± 2ε/M` vanishes,
@@ -1819,7 +1834,7 @@ fn quadrupole_rotor_has_no_integral_but_h_and_j_to_degree_four() {
 fn quadrupole_rotor_vanishing_co_rotating_frequency_adds_no_integral() {
     let (mass, omega) = (1, 1);
     let vanishing = format!("{}/2", mass * omega * omega);
-    let out = expect(
+    let out = expect_the_other_roots_ruled_out(
         "quadrupole-rotor-values-epsilon",
         &[
             "For a generic ε (searched at ε = 7, no root): 4 integrals (section 2), of functional rank 2.",
@@ -1828,8 +1843,6 @@ fn quadrupole_rotor_vanishing_co_rotating_frequency_adds_no_integral() {
                 "Roots of the determinants where the search finds no more integrals: \
                  ε = −{vanishing} and ε = {vanishing}."
             ),
-            "hold no more integrals in this space: at each, every block of the equations keeps \
-             its generic rank",
             "No value of ε but those above has more integrals in this space.",
         ],
     );
@@ -1842,16 +1855,14 @@ fn quadrupole_rotor_vanishing_co_rotating_frequency_adds_no_integral() {
 /// `2a + b ≤ 3`, and nothing new.
 #[test]
 fn quadrupole_rotor_with_a_vanishing_turning_frequency_has_only_h_and_j() {
-    let products = (0..=1).map(|a| 3 - 2 * a + 1).sum::<usize>();
-    expect(
+    let products = products_of_h_and_j(3);
+    expect_h_and_j_alone(
         "quadrupole-rotor-vanishing-frequency",
+        3,
         &[
             "Integrals of the quadrupole rotor at ε = Mω²/2",
             "each basis element was lifted back to symbolic parameters by homogeneity and \
              proved symbolically.",
-            &format!("Dimension of the space of integrals: {products}."),
-            "Known integrals in the space: H, J.",
-            "None: the known integrals generate every integral in the space.",
             &format!("{{Φ, H}} = 0 for the {products} basis elements at ε = Mω²/2 [basis proved]"),
         ],
     );
@@ -1862,14 +1873,12 @@ fn quadrupole_rotor_with_a_vanishing_turning_frequency_has_only_h_and_j() {
 /// `ω = ±√2` where a co-rotating frequency vanishes, are ruled out.
 #[test]
 fn quadrupole_rotor_no_frequency_adds_an_integral_at_degree_two() {
-    let out = expect(
+    let out = expect_the_other_roots_ruled_out(
         "quadrupole-rotor-values-omega",
         &[
             "For a generic ω (searched at ω = 7, no root): 4 integrals (section 2), of functional rank 2.",
             "No rational value of ω has more integrals.",
             "Roots of the determinants where the search finds no more integrals: ω = 0.",
-            "hold no more integrals in this space: at each, every block of the equations keeps \
-             its generic rank",
             "No value of ω has more integrals in this space.",
         ],
     );
