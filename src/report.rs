@@ -360,6 +360,10 @@ pub struct SearchFacts {
     pub largest_block: usize,
     /// The dimension of the space of integrals.
     pub dimension: usize,
+    /// The functional rank of its basis ([`brackets::search::basis_rank`]) and whether it
+    /// is certified from above (else a lower bound); `None` for no integral or where it could
+    /// not be certified.
+    pub functional_rank: Option<(usize, bool)>,
     /// `by_momenta_degree[j]`: the dimension of the integrals of momenta degree `≤ j`.
     pub by_momenta_degree: Vec<usize>,
     /// `counts[j][k]`: basis integrals of momenta degree exactly `j` and trigonometric order `k`.

@@ -6,10 +6,10 @@ use crate::render::Format;
 use std::time::Instant;
 
 use brackets::search::{
-    fix_parameters, search, Integral, NewIntegrals, SearchOptions, SearchResult, SearchSpace,
-    SearchedLevel,
+    basis_rank, fix_parameters, level_set_graph_variable, search, Integral, NewIntegrals,
+    SearchOptions, SearchResult, SearchSpace, SearchedLevel, SEARCH_RANK_MINORS,
 };
-use brackets::{EngineError, System};
+use brackets::{BoundedRank, EngineError, PhaseSpace, System, UpperBound};
 use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, Vars};
 
 use crate::report::{
@@ -493,6 +493,58 @@ fn left_out_text(r: &SearchResult) -> String {
         ),
     };
     constants + &functions
+}
+
+/// ` Functional rank: 5 (certified: …).`, the functional rank of a search's basis
+/// ([`basis_rank`]) as the dimension line says it, certified from above or at least the
+/// lower bound; on a level set, said where it is taken (as `--find-values` takes it).
+fn functional_rank_text(rank: &BoundedRank, space: &PhaseSpace, r: &SearchResult) -> String {
+    let minor = |k: usize| format!("a `{k} × {k}` minor of the Jacobian is nonzero");
+    let why = match rank {
+        BoundedRank::Exact(cert) if cert.rank == 0 => {
+            "certified: every entry of the Jacobian vanishes".to_string()
+        }
+        BoundedRank::Exact(cert) => match cert.upper {
+            UpperBound::VanishingMinors { count } => format!(
+                "certified: {}, the {} bordering it {}",
+                minor(cert.rank),
+                counted(count, "minor"),
+                agreeing(count, "vanishes", "vanish")
+            ),
+            UpperBound::Flow => {
+                let n = cert.coordinates.len();
+                let within = match n < space.coordinates().len() {
+                    true => format!("on the {n}-dimensional level set"),
+                    false => format!("in {n} phase variables"),
+                };
+                format!(
+                    "certified: {}, and integrals of a flow {within} have rank at most {}",
+                    minor(cert.rank),
+                    n - 1
+                )
+            }
+            _ => format!("certified: {}", minor(cert.rank)),
+        },
+        BoundedRank::AtLeast(k) => format!(
+            "{}; more than {SEARCH_RANK_MINORS} minors border it",
+            minor(*k)
+        ),
+    };
+    let at_least = match rank.is_exact() {
+        true => "",
+        false => "at least ",
+    };
+    // A condition that fixes a momentum leaves it out: the rank is that where it holds.
+    let taken = match (&r.on, level_set_graph_variable(space, r)) {
+        (None, _) if r.variables.left_out.is_empty() => "",
+        (None, _) => " where the condition holds",
+        (Some(_), Some(_)) => " on the level set",
+        (Some(_), None) => " in the whole phase space, not on the level set",
+    };
+    format!(
+        " Functional rank: {at_least}{}{taken} ({why}).",
+        rank.rank()
+    )
 }
 
 /// ` By degree in the momenta: ≤ 0: 1, ≤ 1: 6.`, `dims[j]` integrals of degree `≤ j` (`what`:
@@ -1093,10 +1145,19 @@ impl Shared {
             (self.caller, self.solved),
         ));
         entries.extend(self.symbolic_note());
-        entries.extend(self.dimensions(r, vars));
+        // The rank of the basis found; a search whose rank cannot be certified (a denominator
+        // vanishing at every sample point) is shown without it.
+        let rank = (!r.basis.is_empty())
+            .then(|| basis_rank(system, options, r).ok())
+            .flatten();
+        let rank_text = rank
+            .as_ref()
+            .map(|rank| functional_rank_text(rank, system.space(), r))
+            .unwrap_or_default();
+        entries.extend(self.dimensions(r, vars, &rank_text));
         entries.extend(positions_degree_hint(system, options, r, self.caller));
         if self.facts {
-            entries.push(self.search_facts(r, vars, for_every_value));
+            entries.push(self.search_facts(r, vars, for_every_value, rank.as_ref()));
         }
         Ok(Section {
             number: 1,
@@ -1118,8 +1179,9 @@ impl Shared {
     }
 
     /// The dimension of the space of integrals, by degree in the momenta and in the Poisson
-    /// variables, and the lines counting the integrals of each exact degree.
-    fn dimensions(&self, r: &SearchResult, vars: &Vars) -> Vec<Entry> {
+    /// variables, its functional rank (`rank`, its sentence), and the lines counting the
+    /// integrals of each exact degree.
+    fn dimensions(&self, r: &SearchResult, vars: &Vars, rank: &str) -> Vec<Entry> {
         let over = match &self.symbolic {
             // With symbolic parameters the space is over Q, and `M·I` counts apart from `I`.
             Some(_) => " over `Q` (a parameter's multiple of an integral counts apart from it)",
@@ -1148,7 +1210,7 @@ impl Shared {
             }));
         }
         let mut entries = vec![Entry::Text(format!(
-            "Dimension of the space of integrals{over}: {}.{by_degree}",
+            "Dimension of the space of integrals{over}: {}.{by_degree}{rank}",
             r.basis.len(),
         ))];
         entries.extend(exactly.into_iter().map(Entry::Text));
@@ -1157,7 +1219,13 @@ impl Shared {
 
     /// The search's facts for JSON: the space, its variables by kind, the parameters, the
     /// size of the linear algebra, the dimensions and counts, and the integrals shown.
-    fn search_facts(&self, r: &SearchResult, vars: &Vars, for_every_value: usize) -> Entry {
+    fn search_facts(
+        &self,
+        r: &SearchResult,
+        vars: &Vars,
+        for_every_value: usize,
+        rank: Option<&BoundedRank>,
+    ) -> Entry {
         let name_of = |v: &Var| vars.variable(*v).name().to_string();
         let names_of = |vs: &[Var]| vs.iter().map(name_of).collect::<Vec<_>>();
         Entry::Data(Facts::Search(Box::new(SearchFacts {
@@ -1181,6 +1249,7 @@ impl Shared {
             blocks: r.components,
             largest_block: r.largest_component,
             dimension: r.basis.len(),
+            functional_rank: rank.map(|rank| (rank.rank(), rank.is_exact())),
             by_momenta_degree: r.dimensions_by_momenta_degree(),
             counts: r.counts(),
             by_poisson_degree: r.dimensions_by_poisson_degree(),
@@ -1596,26 +1665,22 @@ impl Shared {
         )))
     }
 
-    /// That the integrals lifted through their restatements ([`ShownForms`]) hold for every
-    /// value: none where there are none.
+    /// Which integrals are lifted through their restatements at the fixed values
+    /// ([`ShownForms`]; the count says that they hold for every value, each claim for which
+    /// parameters): none where there are none.
     fn lifted_through_note(&self, forms: &ShownForms) -> Option<Entry> {
         let labels: Vec<String> = (self.shown.iter().zip(&forms.through))
             .filter(|(_, &t)| t)
             .map(|(&i, _)| format!("`{}`", self.label(i)))
             .collect();
         let (last, rest) = labels.split_last()?;
-        let (names, they, each) = match rest {
-            [] => (last.clone(), "it is", "the restatement is"),
-            _ => (
-                format!("{} and {last}", rest.join(", ")),
-                "they are",
-                "each restatement is",
-            ),
+        let (names, they) = match rest {
+            [] => (last.clone(), "it is"),
+            _ => (format!("{} and {last}", rest.join(", ")), "they are"),
         };
         Some(Entry::Text(format!(
             "Restated at `{}`, where {they} found, and lifted through the restatement: \
-             {names}. With the file's functions as written, {each} an integral for every \
-             value (proved symbolically below).",
+             {names}, with the file's functions as written.",
             self.held.at(true)?.0
         )))
     }
@@ -1710,10 +1775,7 @@ fn how_lifted(r: &SearchResult, for_every_value: usize, through: usize) -> Strin
     } else if r.liftable {
         let more = match through {
             0 => String::new(),
-            t => format!(
-                ", and {t} more through {} in the file's functions (proved symbolically){others}",
-                restatements(t)
-            ),
+            t => format!(", and {t} more through {}{others}", restatements(t)),
         };
         format!("then lifted back to symbolic parameters by homogeneity where possible{more}")
     } else {
@@ -1730,14 +1792,13 @@ fn how_lifted(r: &SearchResult, for_every_value: usize, through: usize) -> Strin
                 agreeing(k, "holds", "hold")
             ),
             (0, t) => format!(
-                "{t} of the {} {} for every value through {} in the file's functions",
+                "{t} of the {} {} for every value through {}",
                 counted(n, "basis element"),
                 agreeing(t, "holds", "hold"),
                 restatements(t)
             ),
             (k, t) => format!(
-                "{k} of the {} {} for every value as found and {t} through {} in the file's \
-                 functions",
+                "{k} of the {} {} for every value as found and {t} through {}",
                 counted(n, "basis element"),
                 agreeing(k, "holds", "hold"),
                 restatements(t)

@@ -112,7 +112,9 @@
 //!                   function of the others, not to a constant), "poisson_degree", "poisson_variables", "denominators_degree",
 //!                   "radicals_degree" },
 //!                   "parameters", "unknowns", "equations", "blocks", "largest_block",
-//!                   "dimension", "by_momenta_degree": [int] (≤ j), "counts": [[int]]
+//!                   "dimension", "functional_rank": int | null (of the basis: as for
+//!                   "exceptional_values", null for no integral), "functional_rank_exact": bool
+//!                   | null, "by_momenta_degree": [int] (≤ j), "counts": [[int]]
 //!                   (momenta degree exactly j, order k), "by_poisson_degree": [int] (≤ j in
 //!                   the Poisson variables), "poisson_counts": [[int]] (their degree exactly
 //!                   j, order k), "for_every_value": int,
@@ -605,6 +607,8 @@ fn search(f: &SearchFacts, section: u32) -> Value {
         "blocks": f.blocks,
         "largest_block": f.largest_block,
         "dimension": f.dimension,
+        "functional_rank": f.functional_rank.map(|r| r.0),
+        "functional_rank_exact": f.functional_rank.map(|r| r.1),
         "by_momenta_degree": f.by_momenta_degree,
         "counts": f.counts,
         "by_poisson_degree": f.by_poisson_degree,

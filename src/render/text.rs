@@ -2,6 +2,7 @@
 
 use brackets::UpperBound;
 use rayon::prelude::*;
+use std::borrow::Cow;
 use trigpoly::{GaussianRational, Style, VarKind};
 
 use super::{
@@ -93,15 +94,56 @@ fn prose(markup: &str) -> Vec<String> {
             Some(c)
         })
         .collect();
-    wrap(&kept, WRAP, "")
+    wrap_prose(&kept, WRAP, "")
         .into_iter()
         .map(|line| line.replace(KEPT, " "))
         .collect()
 }
 
+/// The words of `s` to wrap, a value kept with what it is the value of where the two fit on
+/// a line of `room` columns: `I3 = 300007/300017` and `4 × 4` (a word `=` or `×` with the
+/// words around it, `≤` or `≥` with the next) and `≤ 2: 3` (a bound's colon with its count).
+fn wrapped_words(s: &str, room: usize) -> Vec<Cow<'_, str>> {
+    let mut units: Vec<Cow<'_, str>> = Vec::new();
+    let mut glue_next = false;
+    for word in s.split(' ').filter(|w| !w.is_empty()) {
+        let glue = glue_next || matches!(word, "=" | "×");
+        glue_next = matches!(word, "=" | "≤" | "≥" | "×");
+        match units.last_mut() {
+            Some(last) if glue && width(last) + 1 + width(word) <= room => {
+                glue_next |= word.ends_with(':') && last.starts_with(['≤', '≥']);
+                let unit = last.to_mut();
+                unit.push(' ');
+                unit.push_str(word);
+            }
+            _ => units.push(Cow::Borrowed(word)),
+        }
+    }
+    units
+}
+
 /// Greedy word wrap at spaces, keeping the leading indentation; continuation lines start
 /// with `indent`.
 pub(crate) fn wrap(s: &str, w: usize, indent: &str) -> Vec<String> {
+    let words = s.split(' ').filter(|w| !w.is_empty()).map(Cow::Borrowed);
+    wrap_words(s, words, w, indent)
+}
+
+/// [`wrap`] for sentences: a value stays with its name where the two fit on a line
+/// ([`wrapped_words`]).
+fn wrap_prose(s: &str, w: usize, indent: &str) -> Vec<String> {
+    let room = w.saturating_sub(width(s) - width(s.trim_start_matches(' ')));
+    let words = wrapped_words(s, room.min(w.saturating_sub(width(indent))));
+    wrap_words(s, words.into_iter(), w, indent)
+}
+
+/// [`wrap`] of the words of `s`, given.
+fn wrap_words<'a>(
+    s: &str,
+    words: impl Iterator<Item = Cow<'a, str>>,
+    w: usize,
+    indent: &str,
+) -> Vec<String> {
     let lead = &s[..s.len() - s.trim_start_matches(' ').len()];
     let mut lines = Vec::new();
     let mut line = lead.to_string();
@@ -111,7 +153,8 @@ pub(crate) fn wrap(s: &str, w: usize, indent: &str) -> Vec<String> {
     // Whether the line holds only a sign, which stays with the term after it (`+ 1000…0x`, a
     // term wider than a line, was a `+` on a line of its own).
     let mut sign_only = false;
-    for word in s.split(' ').filter(|w| !w.is_empty()) {
+    for word in words {
+        let word = &*word;
         let word_width = width(word);
         if !empty && !sign_only && line_width + 1 + word_width > w {
             lines.push(std::mem::take(&mut line));
@@ -429,7 +472,7 @@ fn verdict_line(out: &mut Vec<String>, c: &ClaimResult) {
         }
     }
     if let Some(n) = &c.note {
-        out.extend(wrap(&format!("      {n}"), WRAP, "        "));
+        out.extend(wrap_prose(&format!("      {n}"), WRAP, "        "));
     }
     if let Some(u) = &c.undecided {
         out.extend(wrap(&format!("      {}", stopped(u)), WRAP, "        "));

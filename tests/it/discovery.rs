@@ -1741,9 +1741,9 @@ fn dipole_rotor_energy_at_fixed_values_is_lifted_through_two_h() {
         "dipole-rotor-values-omega",
         &[
             "3 of the 4 basis elements hold for every value as found and 1 through its \
-             restatement in the file's functions (proved symbolically).",
+             restatement (proved symbolically).",
             "Restated at ω = 7, M = 1, I = 1, ε = 1, where it is found, and lifted through the \
-             restatement: Φ3.",
+             restatement: Φ3, with the file's functions as written.",
             "{2 H, H} = 0 at ω = 7 [Φ3 proved] \
              proved for every M, I, ε; it is Φ3 at ω = 7, M = 1, I = 1, ε = 1",
         ],
@@ -3815,8 +3815,7 @@ fn a_searchs_labels_and_suggestions_do_not_repeat_the_systems_own() {
     assert!(
         text.contains(
             "nothing is lifted; 2 of the 4 basis elements hold for every value as found and 1 \
-             through its restatement in the file's functions (proved symbolically), the others \
-             at these values only"
+             through its restatement (proved symbolically), the others at these values only"
         ),
         "{text}"
     );
@@ -7145,12 +7144,12 @@ fn search_at_fixed_values_restates_there_only_what_is_not_lifted() {
     for piece in [
         "I2 = p_x² + p_y² + 2x⁴ + 24x²y² + 32y⁴ = 2 H",
         "so nothing is lifted; 1 of the 3 basis elements holds for every value as found and 1 \
-         through its restatement in the file's functions (proved symbolically), the others at \
-         these values only.",
+         through its restatement (proved symbolically), the others at these values only.",
         "What is not lifted holds at these values",
         "Restated at a = 12, b = 16, where it holds (not lifted): I3, with H and the file's \
          functions at these values.",
-        "Restated at a = 12, b = 16, where it is found, and lifted through the restatement: I2.",
+        "Restated at a = 12, b = 16, where it is found, and lifted through the restatement: I2, \
+         with the file's functions as written.",
         "{2 H, H} = 0 [I2 proved] proved for every a, b; it is I2 at a = 12, b = 16",
         "{I3, H} = 0 at a = 12, b = 16 [I3 proved] not lifted back to the parameters",
     ] {
@@ -7527,4 +7526,155 @@ fn quartic_potentials_search(fix: &str, momenta: u32, positions: u32) -> String 
         "search systems/quartic-potentials.toml --fix {fix} --momenta-degree {momenta} \
          --positions-degree {positions} --trig-degree 0"
     )))
+}
+
+/// Every search says the functional rank of its basis beside its dimension, in the text and
+/// in JSON: the harmonic rotor at the resonance `p_θ = Iω` has 20 integrals of rank 4 where
+/// the condition holds (maximal on that five-dimensional level set: with `p_θ`, 5 = 2·3 − 1
+/// in the whole phase space), the same on the level set `p_θ = 1` at `ω = 1`, and off the
+/// resonance 9 integrals of rank 4, a rank below the dimension and not maximal.
+#[test]
+fn every_search_says_the_functional_rank_of_its_basis() {
+    let rotor = "systems/harmonic-rotor.toml";
+    let resonance = [
+        "search",
+        rotor,
+        "--when",
+        "p_theta = I*omega",
+        "--no-timings",
+    ];
+    let text = superint_ok(&resonance);
+    assert!(
+        normalize(&text).contains(
+            "Dimension of the space of integrals: 20. By degree in the momenta: ≤ 0: 1, ≤ 1: 6, \
+             ≤ 2: 20. Functional rank: 4 where the condition holds (certified: a 4 × 4 minor \
+             of the Jacobian is nonzero, and integrals of a flow on the 5-dimensional level \
+             set have rank at most 4)."
+        ),
+        "{text}"
+    );
+    let json = superint_json(&resonance);
+    let found = &json["searches"][0];
+    assert_eq!(found["dimension"], 20);
+    assert_eq!(found["functional_rank"], 4);
+    assert_eq!(found["functional_rank_exact"], true);
+    let on = [
+        "search",
+        rotor,
+        "--on",
+        "p_theta = 1",
+        "--fix",
+        "omega=1",
+        "--no-timings",
+    ];
+    let text = superint_ok(&on);
+    assert!(
+        normalize(&text).contains("≤ 2: 20. Functional rank: 4 on the level set (certified:"),
+        "{text}"
+    );
+    let generic = superint_json(&["search", rotor, "--no-timings"]);
+    let found = &generic["searches"][0];
+    assert_eq!(found["dimension"], 9);
+    assert_eq!(found["functional_rank"], 4);
+}
+
+/// The prose keeps a value with what it is the value of where the two fit on a line: the
+/// Euler top's `I3 = 300007/300017` in the parameters' sentence and in each claim's note,
+/// and `≤ 2: 3` in the dimensions by degree; no line of the report is wider than the wrap.
+#[test]
+fn the_prose_keeps_a_value_with_its_name_on_one_line() {
+    let fix = "I1=100001/100003,I2=200003/200017,I3=300007/300017";
+    let args = [
+        "search",
+        "systems/euler-top.toml",
+        "--poisson-degree",
+        "4",
+        "--fix",
+        fix,
+    ];
+    let text = superint_ok(&[&args[..], &["--no-timings"]].concat());
+    let lines: Vec<&str> = text.lines().collect();
+    assert!(lines.iter().all(|l| !l.ends_with(" =")), "{text}");
+    assert!(
+        lines.iter().any(|l| l.starts_with("I3 = 300007/300017;")),
+        "{text}"
+    );
+    assert_eq!(
+        lines
+            .iter()
+            .filter(|l| l.trim_start() == "I3 = 300007/300017")
+            .count(),
+        5,
+        "{text}"
+    );
+    assert!(text.contains("≤ 2: 3, ≤ 3: 3"), "{text}");
+    assert!(lines.iter().all(|l| l.chars().count() <= 96), "{text}");
+}
+
+/// Maximal superintegrability certified by the flow alone: the 3D Kepler problem's 14
+/// integrals of momenta degree `≤ 2` (more than its 6 phase variables) have rank 5, the most
+/// integrals of a flow can have, exact with no bordering minor (JSON's upper bound is the
+/// rank's alone, `functional_rank_exact`); the harmonic rotor at the resonance `p_θ = Iω`,
+/// 20 integrals, rank 4 on the five dimensions the condition leaves, the same.
+#[test]
+fn maximal_superintegrability_is_certified_by_the_flow_without_minors() {
+    let kepler = [
+        "search",
+        "systems/kepler-3d.toml",
+        "--momenta-degree",
+        "2",
+        "--positions-degree",
+        "2",
+        "--radicals-degree",
+        "1",
+        "--no-timings",
+    ];
+    let text = normalize(&superint_ok(&kepler));
+    assert!(
+        text.contains(
+            "Dimension of the space of integrals: 14. By degree in the momenta: ≤ 0: 1, ≤ 1: \
+             4, ≤ 2: 14. Functional rank: 5 (certified: a 5 × 5 minor of the Jacobian is \
+             nonzero, and integrals of a flow in 6 phase variables have rank at most 5)."
+        ),
+        "{text}"
+    );
+    let json = superint_json(&kepler);
+    assert_eq!(json["searches"][0]["dimension"], 14);
+    assert_eq!(json["searches"][0]["functional_rank"], 5);
+    assert_eq!(json["searches"][0]["functional_rank_exact"], true);
+    let resonance = [
+        "search",
+        "systems/harmonic-rotor.toml",
+        "--when",
+        "p_theta = I*omega",
+        "--no-timings",
+    ];
+    let text = normalize(&superint_ok(&resonance));
+    assert!(
+        text.contains("and integrals of a flow on the 5-dimensional level set"),
+        "{text}"
+    );
+    assert!(!text.contains("minors bordering it vanish"), "{text}");
+}
+
+/// A rank below the dimension, where the flow does not bound it: the dipole rotor at momenta
+/// degree 3, positions 2, order 2 has 4 integrals of rank 2 in 6 phase variables, certified
+/// by the 8 bordering minors vanishing (few enough to expand in a plain search).
+#[test]
+fn dipole_rotor_search_has_rank_two_below_its_dimension() {
+    let command = "search systems/dipole-rotor.toml --momenta-degree 3 --positions-degree 2 \
+                   --trig-degree 2 --no-timings";
+    let args: Vec<&str> = command.split_whitespace().collect();
+    let text = normalize(&superint_ok(&args));
+    assert!(
+        text.contains(
+            "≤ 3: 4. Functional rank: 2 (certified: a 2 × 2 minor of the Jacobian is \
+             nonzero, the 8 minors bordering it vanish)."
+        ),
+        "{text}"
+    );
+    let json = superint_json(&args);
+    assert_eq!(json["searches"][0]["dimension"], 4);
+    assert_eq!(json["searches"][0]["functional_rank"], 2);
+    assert_eq!(json["searches"][0]["functional_rank_exact"], true);
 }

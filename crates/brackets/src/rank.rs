@@ -30,6 +30,11 @@ pub enum UpperBound {
         /// coordinates.
         count: usize,
     },
+    /// The rank is one less than the number of coordinates, and the functions are integrals
+    /// of a Hamiltonian flow that is not identically zero ([`integrals_rank_within`]): each
+    /// gradient annihilates the Hamiltonian vector field, so where it is not zero the
+    /// gradients span at most a hyperplane (maximal superintegrability is exactly this rank).
+    Flow,
 }
 
 impl UpperBound {
@@ -55,6 +60,7 @@ impl UpperBound {
         match self {
             UpperBound::Size => "size",
             UpperBound::VanishingMinors { .. } => "vanishing_minors",
+            UpperBound::Flow => "flow",
         }
     }
 
@@ -62,7 +68,7 @@ impl UpperBound {
     /// for a bound that expands none.
     pub fn minors(&self) -> Option<usize> {
         match self {
-            UpperBound::Size => None,
+            UpperBound::Size | UpperBound::Flow => None,
             UpperBound::VanishingMinors { count } => Some(*count),
         }
     }
@@ -83,6 +89,10 @@ impl std::fmt::Display for UpperBound {
             UpperBound::VanishingMinors { count } => write!(
                 f,
                 "the {count} minors bordering the nonzero one vanish identically"
+            ),
+            UpperBound::Flow => f.write_str(
+                "integrals of a flow that is not identically zero have a rank at most the \
+                 number of coordinates less one",
             ),
         }
     }
@@ -289,7 +299,165 @@ pub fn rank_within(
     functions: &[Expr],
     max_minors: usize,
 ) -> Result<BoundedRank, EngineError> {
-    rank_bounded_by(space, functions, space.coordinates(), max_minors)
+    rank_bounded_by(space, functions, space.coordinates(), None, max_minors)
+}
+
+/// [`rank_within`] for integrals of the flow of `hamiltonian` (each `F` with `{F, H} = 0`
+/// identically, or where `condition` holds; the caller vouches for it), which bounds the rank
+/// without any symbolic minor. Each gradient annihilates the Hamiltonian vector field `X_H`
+/// (`dF(X_H) = {F, H} = 0`); where `X_H` is not identically zero it is nonzero on a dense open
+/// set, and there the gradients lie in its annihilator, a hyperplane: the rank is at most
+/// `n − 1` for `n` coordinates ([`UpperBound::Flow`]). On a Lie–Poisson space (a top) this
+/// holds as it is, a Casimir's gradient annihilating every Hamiltonian vector field, and is
+/// the most there too: the Casimirs and `2m − 1` integrals on the leaves of dimension `2m`.
+/// `X_H` is shown not to be identically zero by a nonzero component `{z, H}` at one of the
+/// exact sample points; where every one vanishes at those the bound is not used.
+///
+/// With a condition that sets phase variables alone (`p_θ = Iω`), none of which the integrals
+/// hold, and whose level set the flow keeps (`{v − value, H}` vanishes on it for each `v` it
+/// sets), the rank is that of the integrals on the level set, by the variables it leaves free
+/// (the other columns are zero), and the same holds there with `X_H` restricted to it: at
+/// most one less than those variables. Any other condition leaves the flow out, and the rank
+/// is [`rank_within`]'s. A rank below the bound needs the bordering minors as
+/// [`rank_within`] does, at most `max_minors` of them.
+///
+/// ```
+/// use brackets::{integrals_rank_within, systems, BoundedRank, UpperBound};
+/// use trigpoly::{Expr, GaussianRational};
+///
+/// // The harmonic rotor's integrals F1, F2, L, G1, G2 and P_{1,1} at ω = 1: rank 5 of 6, the
+/// // most a flow allows, exact with no minor expanded.
+/// let rotor = systems::harmonic_rotor();
+/// let one = Expr::constant(rotor.vars(), GaussianRational::from(1));
+/// let at_one = |e: &Expr| e.subst(rotor.var("omega"), &one);
+/// let mut six = vec![rotor.resonant("Z", 1, 1)?.p];
+/// for name in ["F1", "F2", "L", "G1", "G2"] {
+///     six.push(rotor.get(name).cloned()?);
+/// }
+/// let six: Vec<Expr> = six.iter().map(at_one).collect::<Result<_, _>>()?;
+/// let h = at_one(rotor.hamiltonian())?;
+/// let rank = integrals_rank_within(rotor.space(), &six, &h, None, 0)?;
+/// assert!(matches!(rank, BoundedRank::Exact(ref c) if c.rank == 5 && c.upper == UpperBound::Flow));
+/// # Ok::<(), brackets::EngineError>(())
+/// ```
+pub fn integrals_rank_within(
+    space: &PhaseSpace,
+    integrals: &[Expr],
+    hamiltonian: &Expr,
+    condition: Option<&Condition>,
+    max_minors: usize,
+) -> Result<BoundedRank, EngineError> {
+    match flow_by_free_coordinates(space, integrals, hamiltonian, condition)? {
+        Some((coords, flow)) => match at_flow_bound(space, integrals, &coords, &flow)? {
+            Some(cert) => Ok(BoundedRank::Exact(cert)),
+            None => rank_bounded_by(space, integrals, coords, Some(&flow), max_minors),
+        },
+        None => rank_within(space, integrals, max_minors),
+    }
+}
+
+/// The rank of integrals certified at the flow's bound (one less than the coordinates) at
+/// the first sample point where the flow is nonzero and the integrals reach it, their
+/// gradients taken one at a time and kept where they raise the rank there: a search's
+/// basis of a thousand integrals reaches it within its first few, and the others are never
+/// differentiated. `None` where no first point shows it, for [`rank_bounded_by`].
+fn at_flow_bound(
+    space: &PhaseSpace,
+    integrals: &[Expr],
+    coords: &[Var],
+    flow: &[Expr],
+) -> Result<Option<RankCertificate>, EngineError> {
+    let Some(bound) = coords.len().checked_sub(1).filter(|&b| b > 0) else {
+        return Ok(None);
+    };
+    if integrals.len() <= bound {
+        return Ok(None);
+    }
+    for index in 0..FIRST_POINTS {
+        let Some(point) = sample_point(space, index)? else {
+            continue;
+        };
+        if !flow_moves_at(flow, &point.0)? {
+            continue;
+        }
+        let (mut kept, mut rows) = (Vec::new(), Vec::new());
+        let mut values = Matrix::zeros(0, coords.len());
+        for (i, f) in integrals.iter().enumerate() {
+            let row = coords
+                .iter()
+                .map(|&c| space.derivative(f, c))
+                .collect::<Result<Vec<_>, _>>()?;
+            let mut with_row = Matrix::zeros(kept.len() + 1, coords.len());
+            for (j, e) in row.iter().enumerate() {
+                for k in 0..kept.len() {
+                    with_row.set(k, j, values.get(k, j).clone());
+                }
+                with_row.set(kept.len(), j, e.eval(&point.0)?);
+            }
+            if with_row.reduce().pivot_cols.len() > kept.len() {
+                (values, rows) = (with_row, [rows, vec![row]].concat());
+                kept.push(i);
+            }
+            if kept.len() == bound {
+                let mut cert = certificate_at(&rows, coords, point)?;
+                cert.minor_rows = cert.minor_rows.iter().map(|&k| kept[k]).collect();
+                cert.upper = UpperBound::Flow;
+                return Ok(Some(cert));
+            }
+        }
+    }
+    Ok(None)
+}
+
+/// Coordinates and the components of a Hamiltonian vector field along them.
+type FlowByCoordinates = (Vec<Var>, Vec<Expr>);
+
+/// The coordinates [`integrals_rank_within`] takes the Jacobian by (every phase variable, or
+/// those the condition leaves free) and the components of `X_H` along them (on the level
+/// set); `None` where the condition is not one the flow bounds the rank under.
+fn flow_by_free_coordinates(
+    space: &PhaseSpace,
+    integrals: &[Expr],
+    hamiltonian: &Expr,
+    condition: Option<&Condition>,
+) -> Result<Option<FlowByCoordinates>, EngineError> {
+    let vars = space.vars();
+    let moves = |z: &Expr| space.bracket(z, hamiltonian);
+    let Some(condition) = condition else {
+        let coords = space.coordinates();
+        let flow = coords
+            .iter()
+            .map(|&z| moves(&Expr::var(vars, z)))
+            .collect::<Result<_, _>>()?;
+        return Ok(Some((coords, flow)));
+    };
+    let Ok(set) = condition.level_set_variables() else {
+        return Ok(None);
+    };
+    let subs = condition.subs();
+    let sets_phase_alone = set.len() == subs.len();
+    let held = subs
+        .iter()
+        .any(|(v, _)| integrals.iter().any(|f| f.contains(*v)));
+    if !sets_phase_alone || held {
+        return Ok(None);
+    }
+    let on_level_set = |e: &Expr| condition.apply(e).ok();
+    for (v, value) in subs {
+        let leaves = moves(&Expr::var(vars, *v).checked_sub(value)?)?;
+        if !on_level_set(&leaves).is_some_and(|e| e.is_zero()) {
+            return Ok(None);
+        }
+    }
+    let coords = level_set_coordinates(space, condition)?;
+    let mut flow = Vec::with_capacity(coords.len());
+    for &z in &coords {
+        match on_level_set(&moves(&Expr::var(vars, z))?) {
+            Some(component) => flow.push(component),
+            None => return Ok(None),
+        }
+    }
+    Ok(Some((coords, flow)))
 }
 
 /// The certified rank of the Jacobian of `functions` by the phase variables `coords`.
@@ -298,18 +466,22 @@ fn rank_by(
     functions: &[Expr],
     coords: Vec<Var>,
 ) -> Result<RankCertificate, EngineError> {
-    match rank_bounded_by(space, functions, coords, usize::MAX)? {
+    match rank_bounded_by(space, functions, coords, None, usize::MAX)? {
         BoundedRank::Exact(cert) => Ok(cert),
         BoundedRank::AtLeast(_) => unreachable!("every bordering minor may be expanded"),
     }
 }
 
 /// The rank of the Jacobian of `functions` by the phase variables `coords`, certified from
-/// above where at most `max_minors` minors border the nonzero one.
+/// above where at most `max_minors` minors border the nonzero one, or where it is one less
+/// than the coordinates and `flow` (the components `{z, H}` of a Hamiltonian vector field the
+/// functions are integrals of, by `coords`) is nonzero at a sample point
+/// ([`integrals_rank_within`]).
 fn rank_bounded_by(
     space: &PhaseSpace,
     functions: &[Expr],
     coords: Vec<Var>,
+    flow: Option<&[Expr]>,
     max_minors: usize,
 ) -> Result<BoundedRank, EngineError> {
     let jac: Vec<Vec<Expr>> = functions
@@ -323,7 +495,10 @@ fn rank_bounded_by(
         .collect::<Result<_, _>>()?;
     // Lower bound: the best rank over a few exact points, then over a few more off the line
     // of the first four (cheap beside any symbolic minor).
-    let full = functions.len().min(coords.len());
+    let size = functions.len().min(coords.len());
+    // The most the rank can be: the size, or one less than the coordinates once the flow is
+    // seen to be nonzero at a sample point.
+    let mut full = size;
     let mut best: Option<RankCertificate> = None;
     for index in 0..FIRST_POINTS + EARLY_POINTS {
         if index >= FIRST_POINTS && best.as_ref().is_some_and(|b| b.rank == full) {
@@ -332,6 +507,11 @@ fn rank_bounded_by(
         let Some(point) = sample_point(space, index)? else {
             continue;
         };
+        if let Some(flow) = flow.filter(|_| full == coords.len()) {
+            if flow_moves_at(flow, &point.0)? {
+                full = coords.len() - 1;
+            }
+        }
         let cert = certificate_at(&jac, &coords, point)?;
         if best.as_ref().is_none_or(|b| cert.rank > b.rank) {
             best = Some(cert);
@@ -410,7 +590,21 @@ fn rank_bounded_by(
             }
         }
     }
+    if cert.rank == full && full < size {
+        cert.upper = UpperBound::Flow;
+    }
     Ok(BoundedRank::Exact(cert))
+}
+
+/// Whether a vector field (its components) is nonzero at an exact point, and so not
+/// identically zero.
+fn flow_moves_at(flow: &[Expr], point: &Point) -> Result<bool, EngineError> {
+    for component in flow {
+        if !component.eval(point)?.is_zero() {
+            return Ok(true);
+        }
+    }
+    Ok(false)
 }
 
 /// An exact point, and its values as the certificate lists them.

@@ -96,17 +96,18 @@ use num_traits::{One, Signed, Zero};
 use rustc_hash::FxHashMap;
 use trigpoly::{Expr, Rational, Var, VarKind, Vars};
 
+use crate::claim::Condition;
 use crate::error::{EngineError, EngineLimit};
 use crate::modular::{big_mod, inverse_mod, mul_mod, previous_prime, PRIME};
 use crate::phase::PhaseSpace;
-use crate::rank::{rank_within, BoundedRank};
+use crate::rank::{integrals_rank_within, rank_within, BoundedRank};
 use crate::system::System;
 use crate::univariate::{gcd_mod, is_square_free_mod, IntPoly, ResidueRing};
 
 use super::problem::{blocks, canonical, Problem};
 use super::{
-    fixed_search_problem, refuse_beside_level_set, search, FixedSearch, OnLevel, SearchOptions,
-    SearchResult,
+    fix_parameters, fixed_search_problem, refuse_beside_level_set, search, FixedSearch, OnLevel,
+    SearchOptions, SearchResult,
 };
 
 /// What [`exceptional_values`] found: what the determinants tell ([`Determinants`]), and the
@@ -243,6 +244,75 @@ pub fn functional_rank(
 ) -> Result<BoundedRank, EngineError> {
     let functions: Vec<Expr> = found.basis.iter().map(|i| i.fixed.clone()).collect();
     rank_within(space, &functions, MAX_RANK_MINORS)
+}
+
+/// How many minors bordering the nonzero one [`basis_rank`] expands, where no bound that
+/// costs no symbolic minor meets the lower bound; past that it gives the lower bound alone.
+/// Few, so that the rank costs a plain search little: a basis of hundreds of integrals below
+/// the flow's bound has hundreds of bordering minors, each a symbolic determinant.
+pub const SEARCH_RANK_MINORS: usize = 16;
+
+/// The functional rank of a plain search's basis, as [`functional_rank`] takes it, but
+/// certified from above first by what costs no symbolic minor: the size (`rank ≤ N` integrals,
+/// `≤ n` phase variables), and, where every integral is proved at the fixed
+/// values, the flow of `H` there (`rank ≤ n − 1` where `X_H` is not identically zero, on the
+/// level set of a condition that sets phase variables: [`integrals_rank_within`]); else the
+/// bordering minors, at most [`SEARCH_RANK_MINORS`] of them, else `at least` the lower bound.
+/// On a level set (`--on`) the integrals are integrals modulo its polynomial: the flow bounds
+/// their rank on it where it is a graph ([`level_set_graph_variable`]), and nowhere else.
+pub fn basis_rank(
+    system: &System,
+    options: &SearchOptions,
+    found: &SearchResult,
+) -> Result<BoundedRank, EngineError> {
+    let space = system.space();
+    let functions: Vec<Expr> = found.basis.iter().map(|i| i.fixed.clone()).collect();
+    let graph = level_set_graph(space, found)?;
+    if (found.on.is_some() && graph.is_none()) || !found.basis.iter().all(|i| i.proved_fixed) {
+        return rank_within(space, &functions, SEARCH_RANK_MINORS);
+    }
+    let h = fix_parameters(system.hamiltonian(), &found.parameters)?;
+    let condition = match (&options.condition, graph) {
+        (_, Some(graph)) => Some(graph),
+        (Some(c), None) => {
+            let subs = (c.subs().iter())
+                .map(|(v, e)| Ok((*v, fix_parameters(e, &found.parameters)?)))
+                .collect::<Result<Vec<_>, EngineError>>()?;
+            Some(Condition::all(&c.to_string(), subs)?)
+        }
+        (None, None) => None,
+    };
+    integrals_rank_within(
+        space,
+        &functions,
+        &h,
+        condition.as_ref(),
+        SEARCH_RANK_MINORS,
+    )
+}
+
+/// The level set of a search as the graph of its [`level_set_graph_variable`] `v` over the
+/// others, a condition `v = v − P/c` (`P = c v + …`, `c` a nonzero number at the fixed
+/// values), where the integrals found are integrals on it as under a `--when` setting `v`;
+/// `None` off a level set, or on one that is no such graph.
+fn level_set_graph(
+    space: &PhaseSpace,
+    found: &SearchResult,
+) -> Result<Option<Condition>, EngineError> {
+    let (Some(level), Some(v)) = (&found.on, level_set_graph_variable(space, found)) else {
+        return Ok(None);
+    };
+    let p = fix_parameters(&level.polynomial, &found.parameters)?;
+    let inverse = space
+        .derivative(&p, v)?
+        .as_constant()
+        .and_then(|c| c.try_inv());
+    let Some(inverse) = inverse else {
+        return Ok(None);
+    };
+    let vars = space.vars();
+    let value = Expr::var(vars, v).checked_sub(&p.scale(&inverse))?;
+    Ok(Some(Condition::all(&level.level.text, vec![(v, value)])?))
 }
 
 /// The phase variable `v` the level set of a search is a graph over the others by, where

@@ -107,8 +107,9 @@ mod result;
 mod tests;
 
 pub use exceptional::{
-    exceptional_candidates, exceptional_values, functional_rank, level_set_graph_variable,
-    Candidates, Determinants, ExceptionalValue, ExceptionalValues, RuledOut, MAX_RANK_MINORS,
+    basis_rank, exceptional_candidates, exceptional_values, functional_rank,
+    level_set_graph_variable, Candidates, Determinants, ExceptionalValue, ExceptionalValues,
+    RuledOut, MAX_RANK_MINORS, SEARCH_RANK_MINORS,
 };
 pub use level_set::{BesideLevelSet, LevelProof, LevelReduction, LevelSet};
 pub use options::{SearchOptions, SearchSpace, DEFAULT_MAX_MINOR, DEFAULT_MAX_PRODUCTS};
