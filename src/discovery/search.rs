@@ -7,7 +7,7 @@ use std::time::Instant;
 
 use brackets::search::{
     basis_rank, fix_parameters, level_set_graph_variable, search, Integral, NewIntegrals,
-    SearchOptions, SearchResult, SearchSpace, SearchedLevel, SEARCH_RANK_MINORS,
+    SearchOptions, SearchResult, SearchSpace, SearchedLevel, MAX_RANK_MINORS, SEARCH_RANK_MINORS,
 };
 use brackets::{BoundedRank, EngineError, PhaseSpace, System, UpperBound};
 use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, Vars};
@@ -497,8 +497,14 @@ fn left_out_text(r: &SearchResult) -> String {
 
 /// ` Functional rank: 5 (certified: …).`, the functional rank of a search's basis
 /// ([`basis_rank`]) as the dimension line says it, certified from above or at least the
-/// lower bound; on a level set, said where it is taken (as `--find-values` takes it).
-fn functional_rank_text(rank: &BoundedRank, space: &PhaseSpace, r: &SearchResult) -> String {
+/// lower bound (`max_minors`, those the bound was allowed); on a level set, said where it is
+/// taken (as `--find-values` takes it).
+fn functional_rank_text(
+    rank: &BoundedRank,
+    space: &PhaseSpace,
+    r: &SearchResult,
+    max_minors: usize,
+) -> String {
     let minor = |k: usize| format!("a `{k} × {k}` minor of the Jacobian is nonzero");
     let why = match rank {
         BoundedRank::Exact(cert) if cert.rank == 0 => {
@@ -525,10 +531,9 @@ fn functional_rank_text(rank: &BoundedRank, space: &PhaseSpace, r: &SearchResult
             }
             _ => format!("certified: {}", minor(cert.rank)),
         },
-        BoundedRank::AtLeast(k) => format!(
-            "{}; more than {SEARCH_RANK_MINORS} minors border it",
-            minor(*k)
-        ),
+        BoundedRank::AtLeast(k) => {
+            format!("{}; more than {max_minors} minors border it", minor(*k))
+        }
     };
     let at_least = match rank.is_exact() {
         true => "",
@@ -1148,11 +1153,11 @@ impl Shared {
         // The rank of the basis found; a search whose rank cannot be certified (a denominator
         // vanishing at every sample point) is shown without it.
         let rank = (!r.basis.is_empty())
-            .then(|| basis_rank(system, options, r).ok())
+            .then(|| basis_rank(system, options, r, self.rank_minors()).ok())
             .flatten();
         let rank_text = rank
             .as_ref()
-            .map(|rank| functional_rank_text(rank, system.space(), r))
+            .map(|rank| functional_rank_text(rank, system.space(), r, self.rank_minors()))
             .unwrap_or_default();
         entries.extend(self.dimensions(r, vars, &rank_text));
         entries.extend(positions_degree_hint(system, options, r, self.caller));
@@ -1176,6 +1181,16 @@ impl Shared {
              every monomial in the variables and these parameters, so what is found holds \
              for every value of them."
         )))
+    }
+
+    /// How many bordering minors a section's rank may expand: a `--find-values` section's is
+    /// the one its summary states (at most [`MAX_RANK_MINORS`]), an ordinary search's cheap
+    /// ([`SEARCH_RANK_MINORS`]).
+    fn rank_minors(&self) -> usize {
+        match self.solved {
+            Some(_) => MAX_RANK_MINORS,
+            None => SEARCH_RANK_MINORS,
+        }
     }
 
     /// The dimension of the space of integrals, by degree in the momenta and in the Poisson

@@ -257,19 +257,21 @@ pub const SEARCH_RANK_MINORS: usize = 16;
 /// `≤ n` phase variables), and, where every integral is proved at the fixed
 /// values, the flow of `H` there (`rank ≤ n − 1` where `X_H` is not identically zero, on the
 /// level set of a condition that sets phase variables: [`integrals_rank_within`]); else the
-/// bordering minors, at most [`SEARCH_RANK_MINORS`] of them, else `at least` the lower bound.
+/// bordering minors, at most `max_minors` of them ([`SEARCH_RANK_MINORS`] in a plain search),
+/// else `at least` the lower bound.
 /// On a level set (`--on`) the integrals are integrals modulo its polynomial: the flow bounds
 /// their rank on it where it is a graph ([`level_set_graph_variable`]), and nowhere else.
 pub fn basis_rank(
     system: &System,
     options: &SearchOptions,
     found: &SearchResult,
+    max_minors: usize,
 ) -> Result<BoundedRank, EngineError> {
     let space = system.space();
     let functions: Vec<Expr> = found.basis.iter().map(|i| i.fixed.clone()).collect();
     let graph = level_set_graph(space, found)?;
     if (found.on.is_some() && graph.is_none()) || !found.basis.iter().all(|i| i.proved_fixed) {
-        return rank_within(space, &functions, SEARCH_RANK_MINORS);
+        return rank_within(space, &functions, max_minors);
     }
     let h = fix_parameters(system.hamiltonian(), &found.parameters)?;
     let condition = match (&options.condition, graph) {
@@ -282,13 +284,7 @@ pub fn basis_rank(
         }
         (None, None) => None,
     };
-    integrals_rank_within(
-        space,
-        &functions,
-        &h,
-        condition.as_ref(),
-        SEARCH_RANK_MINORS,
-    )
+    integrals_rank_within(space, &functions, &h, condition.as_ref(), max_minors)
 }
 
 /// The level set of a search as the graph of its [`level_set_graph_variable`] `v` over the
