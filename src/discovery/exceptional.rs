@@ -101,17 +101,14 @@ pub fn exceptional_values_report(
         dimension(0, &found.generic),
         generic_rank
     )));
+    // The generic rank said once, above: the line after these compares each value's with it.
     let values: Vec<String> = (found.values.iter().enumerate())
         .map(|(k, v)| {
-            let same = v.rank.rank() == generic_rank.rank();
-            let rank = match same && v.rank.is_exact() && generic_rank.is_exact() {
-                true => format!("{} as at a generic `{t}`", v.rank.rank()),
-                false => format!("{} against {} at a generic `{t}`", v.rank, generic_rank,),
-            };
             format!(
-                "at `{t} = {}`, {}, of functional rank {rank}",
+                "at `{t} = {}`, {}, of functional rank {}",
                 shown(&v.value),
-                dimension(k + 1, &v.found)
+                dimension(k + 1, &v.found),
+                v.rank
             )
         })
         .collect();

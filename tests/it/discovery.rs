@@ -1506,7 +1506,7 @@ fn henon_heiles_values_of_c_with_a_second_quadratic_integral_found_from_h_alone(
         "hh-values-quadratic",
         &[
             "For a generic C (searched at C = 7, no root): 2 integrals (section 2), of functional rank 1.",
-            "More integrals at C = 1/3, 3 integrals (section 4), of functional rank 2 against 1 at a generic C and at C = 2, 3 integrals (section 6), of functional rank 2 against 1 at a generic C.",
+            "More integrals at C = 1/3, 3 integrals (section 4), of functional rank 2 and at C = 2, 3 integrals (section 6), of functional rank 2.",
             "Roots of the determinants where the search finds no more integrals: C = 2/15 and \
              C = 2/3.",
             "Every root of the determinants is rational: no other value of C has more integrals in \
@@ -1529,7 +1529,7 @@ fn henon_heiles_values_of_c_with_a_quartic_integral_at_b_sixteen_found_from_h_al
         "hh-values-quartic",
         &[
             "For a generic C (searched at C = 7, no root): 3 integrals (section 2), of functional rank 1.",
-            "More integrals at C = 2, 4 integrals (section 4), of functional rank 2 against 1 at a generic C and at C = 16/3, 4 integrals (section 6), of functional rank 2 against 1 at a generic C.",
+            "More integrals at C = 2, 4 integrals (section 4), of functional rank 2 and at C = 16/3, 4 integrals (section 6), of functional rank 2.",
             "The determinants' other 2 roots (complex, none real) hold no more integrals in \
              this space: at each, every block of the equations keeps its generic rank (shown \
              modulo the prime p = 4611686018427387847). No value of C but those above has more integrals in \
@@ -1550,7 +1550,7 @@ fn quartic_potentials_cases_found_from_h() {
         "qp-values-quadratic",
         &[
             "For a generic a (searched at a = 7, no root): 2 integrals (section 2), of functional rank 1.",
-            "More integrals at a = 0, 3 integrals (section 4), of functional rank 2 against 1 at a generic a, at a = 2, 4 integrals (section 6), of functional rank 2 against 1 at a generic a and at a = 6, 3 integrals (section 8), of functional rank 2 against 1 at a generic a.",
+            "More integrals at a = 0, 3 integrals (section 4), of functional rank 2, at a = 2, 4 integrals (section 6), of functional rank 2 and at a = 6, 3 integrals (section 8), of functional rank 2.",
             "Every root of the determinants is rational: no other value of a has more integrals \
              in this space.",
             "I3 = p_x² + 2x⁴",
@@ -1576,7 +1576,7 @@ fn quartic_potentials_parabolic_case_a_twelve_b_sixteen_is_quadratic_found_from_
     expect_alone(
         "qp-values-parabolic",
         &[
-            "More integrals at a = 0, 3 integrals (section 4), of functional rank 2 against 1 at a generic a and at a = 12, 3 integrals (section 6), of functional rank 2 against 1 at a generic a.",
+            "More integrals at a = 0, 3 integrals (section 4), of functional rank 2 and at a = 12, 3 integrals (section 6), of functional rank 2.",
             "Every root of the determinants is rational",
             "I3 = x p_x p_y − y p_x² + 4x⁴y + 8x²y³",
             "8 claims: 8 proved, 0 refuted",
@@ -1597,7 +1597,7 @@ fn quartic_potentials_quartic_case_a_six_b_eight_found_from_h() {
         "qp-values-quartic",
         &[
             "For a generic a (searched at a = 7, no root): 3 integrals (section 2), of functional rank 1.",
-            "More integrals at a = 0, 6 integrals (section 4), of functional rank 2 against 1 at a generic a and at a = 6, 4 integrals (section 6), of functional rank 2 against 1 at a generic a.",
+            "More integrals at a = 0, 6 integrals (section 4), of functional rank 2 and at a = 6, 4 integrals (section 6), of functional rank 2.",
             "The determinants' other 58 roots (not rational; 50 real) hold no more integrals \
              in this space: at each, every block of the equations keeps its generic rank",
             "No value of a but those above has more integrals in this space.",
@@ -1611,7 +1611,7 @@ fn quartic_potentials_quartic_case_a_six_b_eight_found_from_h() {
         "qp-values-b",
         &[
             "For a generic b (searched at b = 7, no root): 3 integrals (section 2), of functional rank 1.",
-            "More integrals at b = 1, 6 integrals (section 4), of functional rank 2 against 1 at a generic b and at b = 8, 4 integrals (section 6), of functional rank 2 against 1 at a generic b.",
+            "More integrals at b = 1, 6 integrals (section 4), of functional rank 2 and at b = 8, 4 integrals (section 6), of functional rank 2.",
             "The determinants' other 28 roots (not rational; 22 real) hold no more integrals \
              in this space",
             "13 claims: 13 proved, 0 refuted",
@@ -1626,7 +1626,7 @@ fn quartic_potentials_a_minus_six_has_no_second_integral() {
     let text = expect_alone(
         "qp-values-quartic-b1",
         &[
-            "More integrals at a = 0, 6 integrals (section 4), of functional rank 2 against 1 at a generic a, at a = 2, 9 integrals (section 6), of functional rank 2 against 1 at a generic a and at a = 6, 6 integrals (section 8), of functional rank 2 against 1 at a generic a.",
+            "More integrals at a = 0, 6 integrals (section 4), of functional rank 2, at a = 2, 9 integrals (section 6), of functional rank 2 and at a = 6, 6 integrals (section 8), of functional rank 2.",
             "The determinants' other 52 roots (not rational; 46 real) hold no more integrals \
              in this space",
         ],
@@ -1653,7 +1653,7 @@ fn harmonic_rotor_values_on_p_theta_one_are_its_resonances() {
         "rotor-values",
         &[
             "For a generic ω (searched at ω = 7, no root): 6 integrals (section 2), of functional rank 3.",
-            "More integrals at ω = −2, 14 integrals (section 4), of functional rank 4 against 3 at a generic ω, at ω = −1, 20 integrals (section 6), of functional rank 4 against 3 at a generic ω, at ω = −1/2, 12 integrals (section 8), of functional rank 4 against 3 at a generic ω, at ω = 0, 10 integrals (section 10), of functional rank 3 as at a generic ω, at ω = 1/2, 12 integrals (section 12), of functional rank 4 against 3 at a generic ω, at ω = 1, 20 integrals (section 14), of functional rank 4 against 3 at a generic ω and at ω = 2, 14 integrals (section 16), of functional rank 4 against 3 at a generic ω.",
+            "More integrals at ω = −2, 14 integrals (section 4), of functional rank 4, at ω = −1, 20 integrals (section 6), of functional rank 4, at ω = −1/2, 12 integrals (section 8), of functional rank 4, at ω = 0, 10 integrals (section 10), of functional rank 3, at ω = 1/2, 12 integrals (section 12), of functional rank 4, at ω = 1, 20 integrals (section 14), of functional rank 4 and at ω = 2, 14 integrals (section 16), of functional rank 4.",
             "Every root of the determinants is rational: no other value of ω has more \
              integrals in this space.",
         ],
@@ -1661,7 +1661,7 @@ fn harmonic_rotor_values_on_p_theta_one_are_its_resonances() {
     expect(
         "rotor-values-ruled-out",
         &[
-            "More integrals at ω = −2, 6 integrals (section 4), of functional rank 4 against 1 at a generic ω, at ω = −1, 6 integrals (section 6), of functional rank 4 against 1 at a generic ω, at ω = 0, 4 integrals (section 8), of functional rank 3 against 1 at a generic ω, at ω = 1, 6 integrals (section 10), of functional rank 4 against 1 at a generic ω and at ω = 2, 6 integrals (section 12), of functional rank 4 against 1 at a generic ω.",
+            "More integrals at ω = −2, 6 integrals (section 4), of functional rank 4, at ω = −1, 6 integrals (section 6), of functional rank 4, at ω = 0, 4 integrals (section 8), of functional rank 3, at ω = 1, 6 integrals (section 10), of functional rank 4 and at ω = 2, 6 integrals (section 12), of functional rank 4.",
             "The determinants' other 4 roots (not rational; 4 real) hold no more integrals in \
              this space: at each, every block of the equations keeps its generic rank",
             "No value of ω but those above has more integrals in this space.",
@@ -1676,7 +1676,7 @@ fn harmonic_rotor_moments_of_inertia_on_p_theta_one_are_its_resonances() {
     expect(
         "rotor-values-inertia",
         &[
-            "More integrals at I = −2, 14 integrals (section 4), of functional rank 4 against 3 at a generic I, at I = −1, 20 integrals (section 6), of functional rank 4 against 3 at a generic I, at I = −1/2, 12 integrals (section 8), of functional rank 4 against 3 at a generic I, at I = 1/2, 12 integrals (section 10), of functional rank 4 against 3 at a generic I, at I = 1, 20 integrals (section 12), of functional rank 4 against 3 at a generic I and at I = 2, 14 integrals (section 14), of functional rank 4 against 3 at a generic I.",
+            "More integrals at I = −2, 14 integrals (section 4), of functional rank 4, at I = −1, 20 integrals (section 6), of functional rank 4, at I = −1/2, 12 integrals (section 8), of functional rank 4, at I = 1/2, 12 integrals (section 10), of functional rank 4, at I = 1, 20 integrals (section 12), of functional rank 4 and at I = 2, 14 integrals (section 14), of functional rank 4.",
             "I = 0, a root of the determinants, is no value",
         ],
     );
@@ -1783,7 +1783,7 @@ fn dipole_rotor_only_zero_field_adds_integrals() {
         "dipole-rotor-values-epsilon",
         &[
             "For a generic ε (searched at ε = 7, no root): 4 integrals (section 2), of functional rank 2.",
-            "More integrals at ε = 0, 9 integrals (section 4), of functional rank 4 against 2 at a generic ε.",
+            "More integrals at ε = 0, 9 integrals (section 4), of functional rank 4.",
             "The determinants' other 2 roots (complex, none real) hold no more integrals in \
              this space",
             "No value of ε but those above has more integrals in this space.",
@@ -1838,7 +1838,7 @@ fn quadrupole_rotor_vanishing_co_rotating_frequency_adds_no_integral() {
         "quadrupole-rotor-values-epsilon",
         &[
             "For a generic ε (searched at ε = 7, no root): 4 integrals (section 2), of functional rank 2.",
-            "More integrals at ε = 0, 9 integrals (section 4), of functional rank 4 against 2 at a generic ε.",
+            "More integrals at ε = 0, 9 integrals (section 4), of functional rank 4.",
             &format!(
                 "Roots of the determinants where the search finds no more integrals: \
                  ε = −{vanishing} and ε = {vanishing}."
@@ -1920,7 +1920,7 @@ fn the_heavy_top_has_kovalevskaya_s_integral_at_i3_one_half_found_from_h_alone()
         "heavy-top-values",
         &[
             "For a generic I3 (searched at I3 = 7, no root): 10 integrals (section 2), of functional rank 3.",
-            "More integrals at I3 = 1/2, 11 integrals (section 4), of functional rank 4 against 3 at a generic I3 and at I3 = 1, 20 integrals (section 6), of functional rank 4 against 3 at a generic I3.",
+            "More integrals at I3 = 1/2, 11 integrals (section 4), of functional rank 4 and at I3 = 1, 20 integrals (section 6), of functional rank 4.",
             "Roots of the determinants where the search finds no more integrals: I3 = 1/4, \
              I3 = 3/2, I3 = 2 and I3 = 4.",
             "I3 = 0, a root of the determinants, is no value: H, with a negative power of I3, \

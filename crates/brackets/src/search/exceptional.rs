@@ -9,9 +9,10 @@
 //! `r` be its generic rank: the values where the kernel is larger are those where every `r×r` minor
 //! vanishes. `M` splits into blocks (unknowns sharing no equation); in each, the rank and an `r×r`
 //! submatrix `S` nonsingular at a random point are found modulo a prime, and `det S(t)` is computed
-//! exactly: modulo primes whose product passes a bound on its coefficients (the product of the
-//! rows' sums of coefficients), each time from its values at `deg + 1` points, then by the Chinese
-//! remainder theorem. Every exceptional value is a root of `det S` of some block. Its rational
+//! exactly: modulo primes whose product passes twice a bound on its coefficients (Hadamard's,
+//! on the unit circle: the product of the rows' Euclidean norms of their entries' sums of
+//! absolute coefficients), each time from its values at `deg + 1` points (`deg` the sum of the
+//! rows' largest degrees, or of the columns'), then by the Chinese remainder theorem. Every exceptional value is a root of `det S` of some block. Its rational
 //! roots are found exactly ([`IntPoly::rational_roots`]), and each is kept only if the ordinary
 //! search at that value finds more integrals than at a generic value (one that is no root).
 //!
@@ -93,12 +94,13 @@ use std::collections::BTreeMap;
 
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
+use rayon::prelude::*;
 use rustc_hash::FxHashMap;
 use trigpoly::{Expr, Rational, Var, VarKind, Vars};
 
 use crate::claim::Condition;
 use crate::error::{EngineError, EngineLimit};
-use crate::modular::{big_mod, inverse_mod, mul_mod, previous_prime, PRIME};
+use crate::modular::{big_mod, inverse_mod, mul_mod, previous_prime, Modulus, PRIME};
 use crate::phase::PhaseSpace;
 use crate::rank::{integrals_rank_within, rank_within, BoundedRank};
 use crate::system::System;
@@ -699,15 +701,15 @@ impl PolyMatrix {
     /// A square submatrix of the block's columns of the block's generic rank, nonsingular at
     /// a random point modulo a prime: its rows (dense, entries polynomials in `t`).
     fn generic_minor(&self, block: &[usize]) -> Vec<Vec<Vec<BigInt>>> {
-        let p = PRIME;
-        let point = RANDOM_POINT % p;
+        let p = Modulus::new(PRIME);
+        let point = RANDOM_POINT % PRIME;
         // The block's rows, increasing, and each one's place among them: `dense[local[r]]` is
         // row `rows[local[r]] = r`, by construction.
         let (rows, local) = self.block_rows(block);
         let mut dense = vec![vec![0_u64; block.len()]; rows.len()];
         for (k, &j) in block.iter().enumerate() {
             for (row, poly) in &self.columns[j] {
-                dense[local[row]][k] = evaluate_mod(poly, point, p);
+                dense[local[row]][k] = evaluate_mod(poly, point, &p);
             }
         }
         // Elimination modulo p, remembering the original row of each pivot.
@@ -720,10 +722,11 @@ impl PolyMatrix {
             };
             order.swap(next, found);
             let pivot = order[next];
-            let inverse = inverse_mod(dense[pivot][col], p);
+            let inverse = inverse_mod(dense[pivot][col], PRIME);
             let pivot_row = dense[pivot].clone();
+            let support = support_after(&pivot_row, col);
             for &other in &order[next + 1..] {
-                clear_entry(&mut dense[other], &pivot_row, col, inverse, p);
+                clear_entry(&mut dense[other], &pivot_row, &support, col, inverse, &p);
             }
             pivot_rows.push(rows[pivot]);
             pivot_columns.push(block[col]);
@@ -956,10 +959,21 @@ impl Mixing {
 
 /// The determinant modulo `p` of the square matrix of polynomials (of integers, or of
 /// residues modulo `p`), of degree at most `degree`: its `degree + 1` coefficients, lowest
-/// first, from its values at `0, 1, …, degree`.
-fn determinant_poly_mod<T: Residue>(minor: &[Vec<Vec<T>>], degree: usize, p: u64) -> Vec<u64> {
+/// first, from its values at `0, 1, …, degree` (each point's elimination on rayon's pool).
+fn determinant_poly_mod<T: Residue + Sync>(
+    minor: &[Vec<Vec<T>>],
+    degree: usize,
+    p: u64,
+) -> Vec<u64> {
+    let modulus = Modulus::new(p);
     let values: Vec<u64> = (0..=degree as u64)
-        .map(|u| determinant_mod(entries_at(minor, |e| evaluate_mod(e, u, p)), p))
+        .into_par_iter()
+        .map(|u| {
+            determinant_mod(
+                entries_at(minor, |e| evaluate_mod(e, u, &modulus)),
+                &modulus,
+            )
+        })
         .collect();
     interpolate_mod(&values, p)
 }
@@ -1003,20 +1017,50 @@ fn determinant_in(ring: &ResidueRing, minor: &[Vec<Vec<u64>>]) -> Option<Vec<u64
 }
 
 /// A bound on the degree of the determinant of the square matrix of polynomials: the sum of
-/// its rows' degrees.
+/// its rows' degrees, or of its columns', whichever is smaller.
 fn degree_bound<T>(minor: &[Vec<Vec<T>>]) -> usize {
-    (minor.iter())
-        .map(|row| row.iter().map(|e| e.len().saturating_sub(1)).max())
-        .map(|d| d.unwrap_or(0))
-        .sum()
+    let mut rows = 0;
+    let mut columns = vec![0; minor.len()];
+    for row in minor {
+        let mut largest = 0;
+        for (k, e) in row.iter().enumerate() {
+            let degree = e.len().saturating_sub(1);
+            largest = largest.max(degree);
+            columns[k] = columns[k].max(degree);
+        }
+        rows += largest;
+    }
+    rows.min(columns.into_iter().sum())
+}
+
+/// The square of Hadamard's bound on the coefficients of the determinant of the square
+/// matrix of polynomials `S`: each coefficient is a mean of `det S(z) z^{−k}` over the unit
+/// circle, where `|det S(z)| ≤ Π_i (Σ_j |S_ij(z)|²)^{1/2}` and `|S_ij(z)| ≤ ‖S_ij‖₁`; so
+/// `Π_i Σ_j ‖S_ij‖₁²`, or the same by columns, whichever is smaller.
+fn coefficient_bound_squared(minor: &[Vec<Vec<BigInt>>]) -> BigInt {
+    let norms: Vec<Vec<BigInt>> = (minor.iter())
+        .map(|row| {
+            (row.iter())
+                .map(|e| e.iter().map(BigInt::abs).sum())
+                .collect()
+        })
+        .collect();
+    let by_rows: BigInt = (norms.iter())
+        .map(|row| row.iter().map(|n| n * n).sum::<BigInt>())
+        .product();
+    let by_columns: BigInt = (0..norms.len())
+        .map(|k| norms.iter().map(|row| &row[k] * &row[k]).sum::<BigInt>())
+        .product();
+    by_rows.min(by_columns)
 }
 
 /// A fixed point in `F_p` standing for a random one (the golden ratio's 64 bits).
 const RANDOM_POINT: u64 = 0x9E37_79B9_7F4A_7C15;
 
 /// The determinant of the square matrix of polynomials, exactly: modulo primes whose product
-/// passes twice the bound `Π_i Σ_j ‖S_ij‖₁` on its coefficients, each from its values at
-/// `deg + 1` points, then by the Chinese remainder theorem.
+/// passes twice Hadamard's bound on its coefficients ([`coefficient_bound_squared`]), each
+/// from its values at `deg + 1` points ([`degree_bound`]), then by the Chinese remainder
+/// theorem.
 fn determinant(minor: &[Vec<Vec<BigInt>>]) -> IntPoly {
     determinant_of_degree(minor, degree_bound(minor))
 }
@@ -1028,20 +1072,12 @@ fn determinant_of_degree(minor: &[Vec<Vec<BigInt>>], degree: usize) -> IntPoly {
         return IntPoly::from_i64(&[1]);
     }
     let degree = degree.min(degree_bound(minor));
-    let bound: BigInt = minor
-        .iter()
-        .map(|row| {
-            row.iter()
-                .flatten()
-                .map(BigInt::abs)
-                .fold(BigInt::zero(), |a, b| a + b)
-        })
-        .product();
-    let needed = BigInt::from(2) * bound;
+    // The modulus must pass twice the bound: its square four times the bound's square.
+    let needed = BigInt::from(4) * coefficient_bound_squared(minor);
     let mut modulus = BigInt::one();
     let mut coeffs = vec![BigInt::zero(); degree + 1];
     let mut p = PRIME;
-    while modulus <= needed {
+    while &modulus * &modulus <= needed {
         let residues = determinant_poly_mod(minor, degree, p);
         // x ≡ coeffs mod modulus, x ≡ residue mod p.
         let m_mod_p = big_mod(&modulus, p);
@@ -1071,7 +1107,7 @@ fn entries_at<T>(minor: &[Vec<Vec<T>>], value: impl Fn(&[T]) -> u64) -> Vec<Vec<
 }
 
 /// The determinant of the square matrix `a` modulo `p`.
-fn determinant_mod(mut a: Vec<Vec<u64>>, p: u64) -> u64 {
+fn determinant_mod(mut a: Vec<Vec<u64>>, p: &Modulus) -> u64 {
     let r = a.len();
     let mut det = 1_u64;
     for col in 0..r {
@@ -1080,16 +1116,23 @@ fn determinant_mod(mut a: Vec<Vec<u64>>, p: u64) -> u64 {
         };
         if found != col {
             a.swap(found, col);
-            det = (p - det) % p;
+            det = p.sub(0, det);
         }
-        det = mul_mod(det, a[col][col], p);
-        let inverse = inverse_mod(a[col][col], p);
+        det = p.mul(det, a[col][col]);
+        let inverse = inverse_mod(a[col][col], p.prime());
         let (above, below) = a.split_at_mut(col + 1);
+        let support = support_after(&above[col], col);
         for row in below {
-            clear_entry(row, &above[col], col, inverse, p);
+            clear_entry(row, &above[col], &support, col, inverse, p);
         }
     }
     det
+}
+
+/// The columns after `col` where the pivot's row is not zero: the only entries that
+/// clearing its column changes in another row (the equations' blocks stay sparse).
+fn support_after(pivot: &[u64], col: usize) -> Vec<usize> {
+    (col + 1..pivot.len()).filter(|&j| pivot[j] != 0).collect()
 }
 
 /// The coefficients, lowest degree first, of the polynomial of degree `< n` taking the
@@ -1125,22 +1168,29 @@ fn interpolate_mod(values: &[u64], p: u64) -> Vec<u64> {
 }
 
 /// Subtracts from `row` the multiple of `pivot` that makes its entry at `col` zero
-/// (`inverse` the inverse of the pivot's there), modulo `p`.
-fn clear_entry(row: &mut [u64], pivot: &[u64], col: usize, inverse: u64, p: u64) {
-    let factor = mul_mod(row[col], inverse, p);
+/// (`inverse` the inverse of the pivot's there), modulo `p`: at `col`, and at the columns
+/// of the pivot's `support` after it ([`support_after`]), the only others it changes.
+fn clear_entry(
+    row: &mut [u64],
+    pivot: &[u64],
+    support: &[usize],
+    col: usize,
+    inverse: u64,
+    p: &Modulus,
+) {
+    let factor = p.mul(row[col], inverse);
     if factor == 0 {
         return;
     }
-    for (x, y) in row[col..].iter_mut().zip(&pivot[col..]) {
-        *x = (*x + p - mul_mod(factor, *y, p)) % p;
+    row[col] = 0;
+    for &j in support {
+        row[j] = p.sub(row[j], p.mul(factor, pivot[j]));
     }
 }
 
 /// `poly(u)` modulo `p`.
-fn evaluate_mod<T: Residue>(poly: &[T], u: u64, p: u64) -> u64 {
-    poly.iter()
-        .rev()
-        .fold(0, |acc, c| (mul_mod(acc, u, p) + c.residue(p)) % p)
+fn evaluate_mod<T: Residue>(poly: &[T], u: u64, p: &Modulus) -> u64 {
+    (poly.iter().rev()).fold(0, |acc, c| p.add(p.mul(acc, u), c.residue(p.prime())))
 }
 
 /// A coefficient of the matrices' polynomials, as a residue modulo `p`.
