@@ -154,7 +154,7 @@ pub(crate) struct Modulus {
     p: u64,
     /// `n`, the bits of `p`.
     bits: u32,
-    /// `⌊2²ⁿ/p⌋`, below `2ⁿ⁺¹`.
+    /// `⌊2²ⁿ/p⌋`, at most `2ⁿ⁺¹` (reached when `p` is a power of two), so below `2⁶³`.
     mu: u64,
 }
 
@@ -164,7 +164,7 @@ impl Modulus {
         assert!((2..1 << 62).contains(&p), "a modulus in [2, 2⁶²)");
         let bits = u64::BITS - p.leading_zeros();
         let mu = u64::try_from((1_u128 << (2 * bits)) / u128::from(p))
-            .expect("⌊2²ⁿ/p⌋ < 2ⁿ⁺¹ fits in a u64");
+            .expect("⌊2²ⁿ/p⌋ ≤ 2ⁿ⁺¹ fits in a u64");
         Modulus { p, bits, mu }
     }
 

@@ -12,7 +12,7 @@
 //! exactly: modulo primes whose product passes twice a bound on its coefficients (Hadamard's,
 //! on the unit circle: the product of the rows' Euclidean norms of their entries' sums of
 //! absolute coefficients), each time from its values at `deg + 1` points (`deg` the sum of the
-//! rows' largest degrees, or of the columns'), then by the Chinese remainder theorem. Every exceptional value is a root of `det S` of some block. Its rational
+//! rows' largest degrees or of the columns', whichever is smaller), then by the Chinese remainder theorem. Every exceptional value is a root of `det S` of some block. Its rational
 //! roots are found exactly ([`IntPoly::rational_roots`]), and each is kept only if the ordinary
 //! search at that value finds more integrals than at a generic value (one that is no root).
 //!
@@ -1034,9 +1034,12 @@ fn degree_bound<T>(minor: &[Vec<Vec<T>>]) -> usize {
 }
 
 /// The square of Hadamard's bound on the coefficients of the determinant of the square
-/// matrix of polynomials `S`: each coefficient is a mean of `det S(z) z^{−k}` over the unit
-/// circle, where `|det S(z)| ≤ Π_i (Σ_j |S_ij(z)|²)^{1/2}` and `|S_ij(z)| ≤ ‖S_ij‖₁`; so
-/// `Π_i Σ_j ‖S_ij‖₁²`, or the same by columns, whichever is smaller.
+/// matrix of polynomials `S`: the coefficient of `t^k` is the mean of `det S(z) z^{−k}` over
+/// the unit circle `|z| = 1` (Cauchy's formula), so at most the largest `|det S(z)|` there,
+/// where `|det S(z)| ≤ Π_i (Σ_j |S_ij(z)|²)^{1/2}` (Hadamard's inequality for the complex
+/// matrix `S(z)`) and `|S_ij(z)| ≤ ‖S_ij‖₁` (the sum of its coefficients' absolute values);
+/// so every coefficient's square is at most `Π_i Σ_j ‖S_ij‖₁²`, or the same by columns
+/// (`det Sᵀ = det S`), whichever is smaller. A Hadamard matrix of constants meets it.
 fn coefficient_bound_squared(minor: &[Vec<Vec<BigInt>>]) -> BigInt {
     let norms: Vec<Vec<BigInt>> = (minor.iter())
         .map(|row| {
@@ -1622,5 +1625,194 @@ mod tests {
         let scaled = at("(p_x^2 + p_y^2 + x^2 + y^2)/(2*a)");
         assert!(!scaled.determinants.zero_left_out);
         assert!(scaled.roots.is_empty(), "{:?}", scaled.roots);
+    }
+
+    /// Integer polynomials, lowest degree first, for the plain expansions below.
+    type Poly = Vec<BigInt>;
+
+    fn poly_mul(a: &[BigInt], b: &[BigInt]) -> Poly {
+        let mut out = vec![BigInt::zero(); (a.len() + b.len()).saturating_sub(1)];
+        for (i, x) in a.iter().enumerate() {
+            for (j, y) in b.iter().enumerate() {
+                out[i + j] += x * y;
+            }
+        }
+        out
+    }
+
+    fn poly_add(a: &mut Poly, b: &[BigInt], negate: bool) {
+        if a.len() < b.len() {
+            a.resize(b.len(), BigInt::zero());
+        }
+        for (x, y) in a.iter_mut().zip(b) {
+            if negate {
+                *x -= y;
+            } else {
+                *x += y;
+            }
+        }
+    }
+
+    /// The determinant by Laplace's expansion along the first row, over `Z[t]`: no prime,
+    /// no bound, no evaluation.
+    fn laplace(m: &[Vec<Poly>]) -> Poly {
+        if m.is_empty() {
+            return vec![BigInt::one()];
+        }
+        let mut det = Poly::new();
+        for (k, entry) in m[0].iter().enumerate() {
+            let minor: Vec<Vec<Poly>> = (m[1..].iter())
+                .map(|row| {
+                    (row.iter().enumerate().filter(|&(j, _)| j != k))
+                        .map(|(_, e)| e.clone())
+                        .collect()
+                })
+                .collect();
+            poly_add(&mut det, &poly_mul(entry, &laplace(&minor)), k % 2 == 1);
+        }
+        det
+    }
+
+    fn xorshift(mut x: u64) -> impl FnMut() -> u64 {
+        move || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        }
+    }
+
+    /// Random square matrices of polynomials: sizes 1 to 5, degrees up to 3, entries zero a
+    /// third of the time (a sparse pivot row), coefficients small, or of 60 to 120 bits
+    /// (several primes), or `±PRIME` and `±(PRIME − 1)`, the first prime and one below it.
+    fn random_matrices(count: usize) -> Vec<Vec<Vec<Poly>>> {
+        let mut next = xorshift(0x9E37_79B9_7F4A_7C15);
+        let mut coefficient = move || {
+            let sign = if next() % 2 == 0 { 1 } else { -1 };
+            let magnitude = match next() % 6 {
+                0 => BigInt::from(PRIME) - next() % 2,
+                1 => BigInt::from(next()) << (next() % 60),
+                _ => BigInt::from(next() % 7),
+            };
+            sign * magnitude
+        };
+        let mut shape = xorshift(0x2545_F491_4F6C_DD1D);
+        (0..count)
+            .map(|_| {
+                let n = 1 + (shape() % 5) as usize;
+                (0..n)
+                    .map(|_| {
+                        (0..n)
+                            .map(|_| match shape() % 3 {
+                                0 => Vec::new(),
+                                _ => (0..=shape() % 4).map(|_| coefficient()).collect(),
+                            })
+                            .collect()
+                    })
+                    .collect()
+            })
+            .collect()
+    }
+
+    #[test]
+    fn the_determinant_mod_primes_is_laplaces_expansion_over_the_integers() {
+        for m in random_matrices(60) {
+            let exact = IntPoly::new(laplace(&m));
+            assert_eq!(determinant(&m), exact, "{m:?}");
+            // The degree bound holds, and is used: interpolating below it would be wrong.
+            assert!(exact.degree().unwrap_or(0) <= degree_bound(&m), "{m:?}");
+        }
+    }
+
+    #[test]
+    fn a_prime_dividing_the_leading_coefficient_loses_no_coefficient() {
+        // det = PRIME·q·t² + q·t − 1, q the second prime: its leading coefficient is 0 modulo
+        // both primes, its value mod each is of lower degree, the CRT still gives each one.
+        let q = previous_prime(PRIME);
+        let big = |n: u64| BigInt::from(n);
+        let m = vec![
+            vec![vec![big(1), big(PRIME)], vec![big(1)]],
+            vec![vec![big(1)], vec![big(0), big(q)]],
+        ];
+        let exact = IntPoly::new(vec![big(0) - 1, big(q), big(PRIME) * big(q)]);
+        assert_eq!(laplace(&m), exact.coeffs().to_vec());
+        assert_eq!(determinant(&m), exact);
+    }
+
+    /// The Sylvester–Hadamard matrix of order `2^k`, times `c`: its determinant `±c^n n^{n/2}`
+    /// meets Hadamard's bound.
+    fn hadamard(k: u32, c: i64) -> Vec<Vec<Poly>> {
+        let n = 1_usize << k;
+        (0..n)
+            .map(|i| {
+                (0..n)
+                    .map(|j| {
+                        let sign = if (i & j).count_ones() % 2 == 0 { 1 } else { -1 };
+                        vec![BigInt::from(sign * c)]
+                    })
+                    .collect()
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_hadamard_matrix_meets_the_coefficient_bound_and_is_reconstructed_past_it() {
+        // 4×4 times c = 20480: det = 16 c⁴ ≈ 2^61.3, between PRIME/2 and PRIME. Hadamard's bound
+        // is met exactly (det² = the bound's square), so one prime, PRIME < 2·det, is not
+        // enough: a modulus past the bound but not twice it would return det − PRIME.
+        let c = 20480_i64;
+        let m = hadamard(2, c);
+        let det = BigInt::from(16) * BigInt::from(c).pow(4);
+        assert!(BigInt::from(PRIME) < BigInt::from(2) * &det && det < BigInt::from(PRIME));
+        assert_eq!(coefficient_bound_squared(&m), &det * &det);
+        assert_eq!(laplace(&m), vec![det.clone()]);
+        assert_eq!(determinant(&m), IntPoly::new(vec![det.clone()]));
+        // Two rows swapped: −det, the other end of the symmetric range.
+        let mut swapped = m.clone();
+        swapped.swap(0, 1);
+        assert_eq!(determinant(&swapped), IntPoly::new(vec![-det]));
+        // Order 8, c = 1: 8⁴ = 4096.
+        assert_eq!(determinant(&hadamard(3, 1)), IntPoly::from_i64(&[4096]));
+    }
+
+    #[test]
+    fn the_degree_bound_takes_the_columns_when_they_are_tighter() {
+        // [[t³, 1], [2t³, 1]]: rows 3 + 3, columns 3 + 0; det = −t³.
+        let t3 = |c: i64| {
+            vec![
+                BigInt::zero(),
+                BigInt::zero(),
+                BigInt::zero(),
+                BigInt::from(c),
+            ]
+        };
+        let m = vec![
+            vec![t3(1), vec![BigInt::one()]],
+            vec![t3(2), vec![BigInt::one()]],
+        ];
+        assert_eq!(degree_bound(&m), 3);
+        assert_eq!(determinant(&m), IntPoly::from_i64(&[0, 0, 0, -1]));
+        // Transposed, the rows are the tighter.
+        let transposed = vec![
+            vec![t3(1), t3(2)],
+            vec![vec![BigInt::one()], vec![BigInt::one()]],
+        ];
+        assert_eq!(degree_bound(&transposed), 3);
+        assert_eq!(determinant(&transposed), IntPoly::from_i64(&[0, 0, 0, -1]));
+    }
+
+    #[test]
+    fn the_determinant_is_the_same_on_one_thread_and_on_several() {
+        // The points' values are collected in their order whatever order they finish in.
+        let on = |threads: usize, m: &[Vec<Poly>]| {
+            (rayon::ThreadPoolBuilder::new().num_threads(threads).build())
+                .unwrap()
+                .install(|| determinant(m))
+        };
+        for m in random_matrices(20) {
+            let one = on(1, &m);
+            assert_eq!(one, on(4, &m), "{m:?}");
+            assert_eq!(one, IntPoly::new(laplace(&m)), "{m:?}");
+        }
     }
 }
