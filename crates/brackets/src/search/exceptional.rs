@@ -1688,7 +1688,7 @@ mod tests {
     fn random_matrices(count: usize) -> Vec<Vec<Vec<Poly>>> {
         let mut next = xorshift(0x9E37_79B9_7F4A_7C15);
         let mut coefficient = move || {
-            let sign = if next() % 2 == 0 { 1 } else { -1 };
+            let sign = if next().is_multiple_of(2) { 1 } else { -1 };
             let magnitude = match next() % 6 {
                 0 => BigInt::from(PRIME) - next() % 2,
                 1 => BigInt::from(next()) << (next() % 60),
@@ -1747,7 +1747,11 @@ mod tests {
             .map(|i| {
                 (0..n)
                     .map(|j| {
-                        let sign = if (i & j).count_ones() % 2 == 0 { 1 } else { -1 };
+                        let sign = if (i & j).count_ones().is_multiple_of(2) {
+                            1
+                        } else {
+                            -1
+                        };
                         vec![BigInt::from(sign * c)]
                     })
                     .collect()
