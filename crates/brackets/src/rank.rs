@@ -358,9 +358,9 @@ pub fn integrals_rank_within(
 
 /// The rank of integrals certified at the flow's bound (one less than the coordinates) at
 /// the first sample point where the flow is nonzero and the integrals reach it, their
-/// gradients taken one at a time and kept where they raise the rank there: a search's
+/// gradients evaluated there one at a time and kept where they raise the rank: a search's
 /// basis of a thousand integrals reaches it within its first few, and the others are never
-/// differentiated. `None` where no first point shows it, for [`rank_bounded_by`].
+/// evaluated. `None` where no first point shows it, for [`rank_bounded_by`].
 fn at_flow_bound(
     space: &PhaseSpace,
     integrals: &[Expr],
@@ -380,26 +380,23 @@ fn at_flow_bound(
         if !flow_moves_at(flow, &point.0)? {
             continue;
         }
-        let (mut kept, mut rows) = (Vec::new(), Vec::new());
+        let mut kept = Vec::new();
         let mut values = Matrix::zeros(0, coords.len());
         for (i, f) in integrals.iter().enumerate() {
-            let row = coords
-                .iter()
-                .map(|&c| space.derivative(f, c))
-                .collect::<Result<Vec<_>, _>>()?;
+            let row = gradient_at(space, f, coords, &point.0)?;
             let mut with_row = Matrix::zeros(kept.len() + 1, coords.len());
-            for (j, e) in row.iter().enumerate() {
+            for (j, value) in row.into_iter().enumerate() {
                 for k in 0..kept.len() {
                     with_row.set(k, j, values.get(k, j).clone());
                 }
-                with_row.set(kept.len(), j, e.eval(&point.0)?);
+                with_row.set(kept.len(), j, value);
             }
             if with_row.reduce().pivot_cols.len() > kept.len() {
-                (values, rows) = (with_row, [rows, vec![row]].concat());
+                values = with_row;
                 kept.push(i);
             }
             if kept.len() == bound {
-                let mut cert = certificate_at(&rows, coords, point)?;
+                let mut cert = certificate_of(values, coords, point);
                 cert.minor_rows = cert.minor_rows.iter().map(|&k| kept[k]).collect();
                 cert.upper = UpperBound::Flow;
                 return Ok(Some(cert));
@@ -484,15 +481,6 @@ fn rank_bounded_by(
     flow: Option<&[Expr]>,
     max_minors: usize,
 ) -> Result<BoundedRank, EngineError> {
-    let jac: Vec<Vec<Expr>> = functions
-        .iter()
-        .map(|f| {
-            coords
-                .iter()
-                .map(|&c| space.derivative(f, c))
-                .collect::<Result<Vec<_>, _>>()
-        })
-        .collect::<Result<_, _>>()?;
     // Lower bound: the best rank over a few exact points, then over a few more off the line
     // of the first four (cheap beside any symbolic minor).
     let size = functions.len().min(coords.len());
@@ -512,7 +500,7 @@ fn rank_bounded_by(
                 full = coords.len() - 1;
             }
         }
-        let cert = certificate_at(&jac, &coords, point)?;
+        let cert = certificate_at(space, functions, &coords, point)?;
         if best.as_ref().is_none_or(|b| cert.rank > b.rank) {
             best = Some(cert);
         }
@@ -557,11 +545,27 @@ fn rank_bounded_by(
     // nonzero somewhere, so the Jacobian's rank is larger at almost every point: further points
     // are tried until one shows it, which raises the lower bound.
     let further = FIRST_POINTS + EARLY_POINTS..FIRST_POINTS + EARLY_POINTS + FURTHER_POINTS;
+    // The symbolic Jacobian, for the bordering minors alone.
+    let mut jac: Option<Vec<Vec<Expr>>> = None;
     while cert.rank < full {
         if (functions.len() - cert.rank) * (coords.len() - cert.rank) > max_minors {
             return Ok(BoundedRank::AtLeast(cert.rank));
         }
-        if let Some(count) = vanishing_bordering_minors(&jac, &coords, &cert)? {
+        let jac = match &mut jac {
+            Some(jac) => jac,
+            None => jac.insert(
+                functions
+                    .iter()
+                    .map(|f| {
+                        coords
+                            .iter()
+                            .map(|&c| space.derivative(f, c))
+                            .collect::<Result<Vec<_>, _>>()
+                    })
+                    .collect::<Result<_, _>>()?,
+            ),
+        };
+        if let Some(count) = vanishing_bordering_minors(jac, &coords, &cert)? {
             cert.upper = UpperBound::VanishingMinors { count };
             break;
         }
@@ -570,7 +574,7 @@ fn rank_bounded_by(
             let Some(point) = sample_point(space, index)? else {
                 continue;
             };
-            let higher = certificate_at(&jac, &coords, point)?;
+            let higher = certificate_at(space, functions, &coords, point)?;
             if higher.rank > cert.rank {
                 raised = Some(higher);
                 break;
@@ -732,16 +736,45 @@ fn candidate_value(c: u64, k: u64) -> Rational {
 
 /// The rank of the Jacobian at a point, with a nonzero minor of that size there.
 fn certificate_at(
-    jac: &[Vec<Expr>],
+    space: &PhaseSpace,
+    functions: &[Expr],
     coords: &[Var],
-    (point, values): SamplePoint,
+    point: SamplePoint,
 ) -> Result<RankCertificate, EngineError> {
-    let mut m = Matrix::zeros(jac.len(), coords.len());
-    for (i, row) in jac.iter().enumerate() {
-        for (j, e) in row.iter().enumerate() {
-            m.set(i, j, e.eval(&point)?);
+    let mut m = Matrix::zeros(functions.len(), coords.len());
+    for (i, f) in functions.iter().enumerate() {
+        for (j, value) in gradient_at(space, f, coords, &point.0)?
+            .into_iter()
+            .enumerate()
+        {
+            m.set(i, j, value);
         }
     }
+    Ok(certificate_of(m, coords, point))
+}
+
+/// The gradient of `f` by `coords` at an exact point, evaluated from its terms
+/// ([`Expr::eval_gradient`]) where the derivative is the plain one (no denominator atom or
+/// radical to differentiate through) and no coordinate is zero there, else by differentiating.
+fn gradient_at(
+    space: &PhaseSpace,
+    f: &Expr,
+    coords: &[Var],
+    point: &Point,
+) -> Result<Vec<GaussianRational>, EngineError> {
+    if space.denominator_atoms().is_empty() && space.radicals().is_empty() {
+        if let Some(gradient) = f.eval_gradient(point, coords)? {
+            return Ok(gradient);
+        }
+    }
+    coords
+        .iter()
+        .map(|&c| Ok(space.derivative(f, c)?.eval(point)?))
+        .collect()
+}
+
+/// The rank of a Jacobian's values `m` at a point, with a nonzero minor of that size there.
+fn certificate_of(m: Matrix, coords: &[Var], (_, values): SamplePoint) -> RankCertificate {
     let red = m.reduce();
     let r = red.pivot_cols.len();
     let mut rows = red.pivot_rows.clone();
@@ -753,7 +786,7 @@ fn certificate_at(
             minor.set(a, b, m.get(i, j).clone());
         }
     }
-    Ok(RankCertificate {
+    RankCertificate {
         rank: r,
         coordinates: coords.to_vec(),
         minor_rows: rows,
@@ -761,7 +794,7 @@ fn certificate_at(
         point: values,
         minor_value: minor.determinant(),
         upper: UpperBound::Size,
-    })
+    }
 }
 
 /// How many minors of `jac` bordering the certificate's nonzero minor (its rows and columns

@@ -7,7 +7,7 @@ use std::fmt;
 use super::Poly;
 use crate::error::{AlgebraError, AngleUse};
 use crate::number::{
-    Coefficient, GaussianInteger, GaussianRational, Integer, IntegerRing, Rational,
+    Coefficient, GaussianAcc, GaussianInteger, GaussianRational, Integer, IntegerRing, Rational,
 };
 use crate::varset::{Layout, Var, VarKind, Vars};
 
@@ -315,6 +315,66 @@ impl<C: Coefficient> Poly<C> {
     /// 10 000 terms of degree 40. Consecutive terms share the leading exponents, so each term
     /// reuses the product of the factors of its common prefix with the term before.
     pub fn eval(&self, point: &Point) -> Result<GaussianRational, AlgebraError> {
+        Ok(self.eval_with_partials(point, &[])?.0)
+    }
+
+    /// The partial derivatives by `vars` at a point ([`Poly::eval`] of each
+    /// [`Poly::derivative`]), from the terms in one pass and without building a derivative:
+    /// a term `t = c·x^e` adds `e_k·t/x_k` to `∂/∂x_k`, and `i·e_k·t` for an angle (`x_k` the
+    /// point `e^{iθ}` of the circle). `None` where a variable of `vars` that appears here is
+    /// zero at the point, for the caller to differentiate instead.
+    ///
+    /// ```
+    /// use trigpoly::{Expr, Point, Rational, Vars};
+    /// let vars = Vars::builder().coordinate("x").coordinate("y").build().unwrap();
+    /// let (x, y) = (vars.lookup("x").unwrap(), vars.lookup("y").unwrap());
+    /// let f = Expr::parse("x^3*y - 2*y^2/3", &vars).unwrap();
+    /// let point = Point::new(&vars).with(x, Rational::new(1, 2)).with(y, Rational::from(3));
+    /// let gradient = f.eval_gradient(&point, &[x, y]).unwrap().unwrap();
+    /// for (value, v) in gradient.iter().zip([x, y]) {
+    ///     assert_eq!(*value, f.derivative(v).unwrap().eval(&point).unwrap());
+    /// }
+    /// ```
+    pub fn eval_gradient(
+        &self,
+        point: &Point,
+        vars: &[Var],
+    ) -> Result<Option<Vec<GaussianRational>>, AlgebraError> {
+        for &v in vars {
+            let j = self.vars.checked_index(v)?;
+            let appears = self.bounds()[j] != (0, 0);
+            if appears
+                && point.values[j]
+                    .as_ref()
+                    .is_some_and(GaussianRational::is_zero)
+            {
+                return Ok(None);
+            }
+        }
+        let (_, sums) = self.eval_with_partials(point, vars)?;
+        let mut gradient = Vec::with_capacity(vars.len());
+        for (&v, sum) in vars.iter().zip(sums) {
+            let j = self.vars.checked_index(v)?;
+            let value = match (sum.is_zero(), &point.values[j]) {
+                (true, _) | (false, None) => sum,
+                (false, Some(_)) if self.vars.variable(v).kind() == VarKind::Angle => {
+                    GaussianRational::new(-&sum.im, sum.re.clone())
+                }
+                (false, Some(x)) => &sum / x,
+            };
+            gradient.push(value);
+        }
+        Ok(Some(gradient))
+    }
+
+    /// The value at a point, and for each of `partials` the sum of `e_k·t` over the terms `t`
+    /// (their values there) with `e_k` the exponent of that variable: [`Poly::eval`] and
+    /// [`Poly::eval_gradient`] in one pass.
+    fn eval_with_partials(
+        &self,
+        point: &Point,
+        partials: &[Var],
+    ) -> Result<(GaussianRational, Vec<GaussianRational>), AlgebraError> {
         if self.vars != point.vars {
             return Err(AlgebraError::VarSetMismatch);
         }
@@ -335,6 +395,15 @@ impl<C: Coefficient> Poly<C> {
             .iter()
             .fold(Integer::ONE, |acc, (_, s)| &acc * &s.denominator());
         let layout = self.layout();
+        // The partials' positions among `scaled` (`None`: the variable does not appear).
+        let partials: Vec<Option<usize>> = partials
+            .iter()
+            .map(|&v| {
+                let j = self.vars.checked_index(v)?;
+                Ok(scaled.iter().position(|(i, _)| *i == j))
+            })
+            .collect::<Result<_, AlgebraError>>()?;
+        let mut partial_sums = vec![GaussianAcc::default(); partials.len()];
         let mut factors: HashMap<(usize, i64), GaussianInteger> = HashMap::new();
         // `prefix[i]`: the product of the first `i` factors of the last term, whose exponents
         // are `last`.
@@ -357,11 +426,23 @@ impl<C: Coefficient> Poly<C> {
             }
             let c = C::from_parts(&Rational::one(), &self.coeffs[k]).to_gaussian();
             let c = GaussianInteger::new(c.re.numer(), c.im.numer());
-            total = total.add(&prefix[scaled.len()].mul(&c));
+            let term = prefix[scaled.len()].mul(&c);
+            for (sum, at) in partial_sums.iter_mut().zip(&partials) {
+                if let Some(e) = at.and_then(|i| last[i]).filter(|&e| e != 0) {
+                    sum.add_mul(&GaussianInteger::from(e), &term);
+                }
+            }
+            total = total.add(&term);
         }
+        let content = GaussianRational::from(self.content.clone());
         let part = |x: &Integer| Rational::from_fraction(x, &denominator).expect("nonzero");
-        let sum = GaussianRational::new(part(&total.re), part(&total.im));
-        Ok(&sum * &GaussianRational::from(self.content.clone()))
+        let value =
+            |g: &GaussianInteger| &GaussianRational::new(part(&g.re), part(&g.im)) * &content;
+        let partial_values = partial_sums
+            .into_iter()
+            .map(|s| value(&s.finish()))
+            .collect();
+        Ok((value(&total), partial_values))
     }
 }
 
