@@ -348,62 +348,9 @@ pub fn integrals_rank_within(
     max_minors: usize,
 ) -> Result<BoundedRank, EngineError> {
     match flow_by_free_coordinates(space, integrals, hamiltonian, condition)? {
-        Some((coords, flow)) => match at_flow_bound(space, integrals, &coords, &flow)? {
-            Some(cert) => Ok(BoundedRank::Exact(cert)),
-            None => rank_bounded_by(space, integrals, coords, Some(&flow), max_minors),
-        },
+        Some((coords, flow)) => rank_bounded_by(space, integrals, coords, Some(&flow), max_minors),
         None => rank_within(space, integrals, max_minors),
     }
-}
-
-/// The rank of integrals certified at the flow's bound (one less than the coordinates) at
-/// the first sample point where the flow is nonzero and the integrals reach it, their
-/// gradients evaluated there one at a time and kept where they raise the rank: a search's
-/// basis of a thousand integrals reaches it within its first few, and the others are never
-/// evaluated. `None` where no first point shows it, for [`rank_bounded_by`].
-fn at_flow_bound(
-    space: &PhaseSpace,
-    integrals: &[Expr],
-    coords: &[Var],
-    flow: &[Expr],
-) -> Result<Option<RankCertificate>, EngineError> {
-    let Some(bound) = coords.len().checked_sub(1).filter(|&b| b > 0) else {
-        return Ok(None);
-    };
-    if integrals.len() <= bound {
-        return Ok(None);
-    }
-    for index in 0..FIRST_POINTS {
-        let Some(point) = sample_point(space, index)? else {
-            continue;
-        };
-        if !flow_moves_at(flow, &point.0)? {
-            continue;
-        }
-        let mut kept = Vec::new();
-        let mut values = Matrix::zeros(0, coords.len());
-        for (i, f) in integrals.iter().enumerate() {
-            let row = gradient_at(space, f, coords, &point.0)?;
-            let mut with_row = Matrix::zeros(kept.len() + 1, coords.len());
-            for (j, value) in row.into_iter().enumerate() {
-                for k in 0..kept.len() {
-                    with_row.set(k, j, values.get(k, j).clone());
-                }
-                with_row.set(kept.len(), j, value);
-            }
-            if with_row.reduce().pivot_cols.len() > kept.len() {
-                values = with_row;
-                kept.push(i);
-            }
-            if kept.len() == bound {
-                let mut cert = certificate_of(values, coords, point);
-                cert.minor_rows = cert.minor_rows.iter().map(|&k| kept[k]).collect();
-                cert.upper = UpperBound::Flow;
-                return Ok(Some(cert));
-            }
-        }
-    }
-    Ok(None)
 }
 
 /// Coordinates and the components of a Hamiltonian vector field along them.
@@ -495,12 +442,27 @@ fn rank_bounded_by(
         let Some(point) = sample_point(space, index)? else {
             continue;
         };
-        if let Some(flow) = flow.filter(|_| full == coords.len()) {
-            if flow_moves_at(flow, &point.0)? {
-                full = coords.len() - 1;
-            }
+        let moves = match flow {
+            Some(flow) => flow_moves_at(flow, &point.0)?,
+            None => false,
+        };
+        if moves {
+            full = full.min(coords.len() - 1);
         }
-        let cert = certificate_at(space, functions, &coords, point)?;
+        // At one of the first points where the flow moves, the functions' gradients are
+        // evaluated one at a time and kept where they raise the rank there, and the rank is
+        // certified as soon as they reach the flow's bound: a search's basis of a thousand
+        // integrals reaches it within its first few, and the others are never evaluated.
+        let flow_bound =
+            (moves && index < FIRST_POINTS && functions.len() > full && full > 0).then_some(full);
+        let (values, kept) = values_at(space, functions, &coords, &point.0, flow_bound)?;
+        if flow_bound.is_some_and(|bound| kept.len() == bound) {
+            let mut cert = certificate_of(values, &coords, point);
+            cert.minor_rows = cert.minor_rows.iter().map(|&k| kept[k]).collect();
+            cert.upper = UpperBound::Flow;
+            return Ok(BoundedRank::Exact(cert));
+        }
+        let cert = certificate_of(values, &coords, point);
         if best.as_ref().is_none_or(|b| cert.rank > b.rank) {
             best = Some(cert);
         }
@@ -741,16 +703,48 @@ fn certificate_at(
     coords: &[Var],
     point: SamplePoint,
 ) -> Result<RankCertificate, EngineError> {
-    let mut m = Matrix::zeros(functions.len(), coords.len());
+    let (values, _) = values_at(space, functions, coords, &point.0, None)?;
+    Ok(certificate_of(values, coords, point))
+}
+
+/// The Jacobian's values at a point, a row for each function; with a `bound`, the functions
+/// whose rows raise the rank of those before them as well, and as soon as `bound` of them do,
+/// their rows alone (the others are not evaluated).
+fn values_at(
+    space: &PhaseSpace,
+    functions: &[Expr],
+    coords: &[Var],
+    point: &Point,
+    bound: Option<usize>,
+) -> Result<(Matrix, Vec<usize>), EngineError> {
+    let mut all = Matrix::zeros(functions.len(), coords.len());
+    let mut kept = Vec::new();
+    let mut independent = Matrix::zeros(0, coords.len());
     for (i, f) in functions.iter().enumerate() {
-        for (j, value) in gradient_at(space, f, coords, &point.0)?
-            .into_iter()
-            .enumerate()
-        {
-            m.set(i, j, value);
+        let row = gradient_at(space, f, coords, point)?;
+        let Some(bound) = bound else {
+            for (j, value) in row.into_iter().enumerate() {
+                all.set(i, j, value);
+            }
+            continue;
+        };
+        let mut with_row = Matrix::zeros(kept.len() + 1, coords.len());
+        for (j, value) in row.into_iter().enumerate() {
+            for k in 0..kept.len() {
+                with_row.set(k, j, independent.get(k, j).clone());
+            }
+            all.set(i, j, value.clone());
+            with_row.set(kept.len(), j, value);
+        }
+        if with_row.reduce().pivot_cols.len() > kept.len() {
+            independent = with_row;
+            kept.push(i);
+            if kept.len() == bound {
+                return Ok((independent, kept));
+            }
         }
     }
-    Ok(certificate_of(m, coords, point))
+    Ok((all, kept))
 }
 
 /// The gradient of `f` by `coords` at an exact point, evaluated from its terms
