@@ -364,6 +364,9 @@ pub struct SearchFacts {
     /// is certified from above (else a lower bound); `None` for no integral or where it could
     /// not be certified.
     pub functional_rank: Option<(usize, bool)>,
+    /// What certifies that rank from above ([`brackets::UpperBound::name`]: `flow`, `size`,
+    /// `vanishing_minors`); `None` where it is a lower bound or there is none.
+    pub functional_rank_bound: Option<&'static str>,
     /// `by_momenta_degree[j]`: the dimension of the integrals of momenta degree `≤ j`.
     pub by_momenta_degree: Vec<usize>,
     /// `counts[j][k]`: basis integrals of momenta degree exactly `j` and trigonometric order `k`.

@@ -495,50 +495,13 @@ fn left_out_text(r: &SearchResult) -> String {
     constants + &functions
 }
 
-/// ` Functional rank: 5 (certified: …).`, the functional rank of a search's basis
-/// ([`basis_rank`]) as the dimension line says it, certified from above or at least the
-/// lower bound (`max_minors`, those the bound was allowed); on a level set, said where it is
-/// taken (as `--find-values` takes it).
-fn functional_rank_text(
-    rank: &BoundedRank,
-    space: &PhaseSpace,
-    r: &SearchResult,
-    max_minors: usize,
-) -> String {
-    let minor = |k: usize| format!("a `{k} × {k}` minor of the Jacobian is nonzero");
-    let why = match rank {
-        BoundedRank::Exact(cert) if cert.rank == 0 => {
-            "certified: every entry of the Jacobian vanishes".to_string()
-        }
-        BoundedRank::Exact(cert) => match cert.upper {
-            UpperBound::VanishingMinors { count } => format!(
-                "certified: {}, the {} bordering it {}",
-                minor(cert.rank),
-                counted(count, "minor"),
-                agreeing(count, "vanishes", "vanish")
-            ),
-            UpperBound::Flow => {
-                let n = cert.coordinates.len();
-                let within = match n < space.coordinates().len() {
-                    true => format!("on the {n}-dimensional level set"),
-                    false => format!("in {n} phase variables"),
-                };
-                format!(
-                    "certified: {}, and integrals of a flow {within} have rank at most {}",
-                    minor(cert.rank),
-                    n - 1
-                )
-            }
-            _ => format!("certified: {}", minor(cert.rank)),
-        },
-        BoundedRank::AtLeast(k) => {
-            format!("{}; more than {max_minors} minors border it", minor(*k))
-        }
-    };
-    let at_least = match rank.is_exact() {
-        true => "",
-        false => "at least ",
-    };
+/// ` Functional rank: 4, the most a flow in 5 phase variables allows (maximal
+/// superintegrability).`, the functional rank of a search's basis ([`basis_rank`]) as the
+/// dimension line says it: the number and why nothing larger is possible (the flow's bound,
+/// the number of integrals or of coordinates, or how many bordering minors vanish), or `at
+/// least` the lower bound; on a level set, said where it is taken (as `--find-values` takes
+/// it). The certificate's minor and point are in JSON (`functional_rank_bound`).
+fn functional_rank_text(rank: &BoundedRank, space: &PhaseSpace, r: &SearchResult) -> String {
     // A condition that fixes a momentum leaves it out: the rank is that where it holds.
     let taken = match (&r.on, level_set_graph_variable(space, r)) {
         (None, _) if r.variables.left_out.is_empty() => "",
@@ -546,10 +509,30 @@ fn functional_rank_text(
         (Some(_), Some(_)) => " on the level set",
         (Some(_), None) => " in the whole phase space, not on the level set",
     };
-    format!(
-        " Functional rank: {at_least}{}{taken} ({why}).",
-        rank.rank()
-    )
+    let BoundedRank::Exact(cert) = rank else {
+        return format!(" Functional rank: {rank}{taken}.");
+    };
+    let k = cert.rank;
+    let why = match cert.upper {
+        _ if k == 0 => " (every integral is a constant)".to_string(),
+        UpperBound::Flow => {
+            let n = cert.coordinates.len();
+            let within = match n < space.coordinates().len() {
+                true => format!("on the {n}-dimensional level set"),
+                false => format!("in {n} phase variables"),
+            };
+            return format!(
+                " Functional rank: {k}, the most a flow {within} allows (maximal \
+                 superintegrability)."
+            );
+        }
+        UpperBound::VanishingMinors { count } => {
+            format!(" (certified by {})", counted(count, "vanishing minor"))
+        }
+        _ if k == r.basis.len() => format!(" (all {k} integrals independent)"),
+        _ => " (as many as the phase variables)".to_string(),
+    };
+    format!(" Functional rank: {k}{taken}{why}.")
 }
 
 /// ` By degree in the momenta: ≤ 0: 1, ≤ 1: 6.`, `dims[j]` integrals of degree `≤ j` (`what`:
@@ -1157,7 +1140,7 @@ impl Shared {
             .flatten();
         let rank_text = rank
             .as_ref()
-            .map(|rank| functional_rank_text(rank, system.space(), r, self.rank_minors()))
+            .map(|rank| functional_rank_text(rank, system.space(), r))
             .unwrap_or_default();
         entries.extend(self.dimensions(r, vars, &rank_text));
         entries.extend(positions_degree_hint(system, options, r, self.caller));
@@ -1265,6 +1248,10 @@ impl Shared {
             largest_block: r.largest_component,
             dimension: r.basis.len(),
             functional_rank: rank.map(|rank| (rank.rank(), rank.is_exact())),
+            functional_rank_bound: match rank {
+                Some(BoundedRank::Exact(cert)) => Some(cert.upper.name()),
+                _ => None,
+            },
             by_momenta_degree: r.dimensions_by_momenta_degree(),
             counts: r.counts(),
             by_poisson_degree: r.dimensions_by_poisson_degree(),

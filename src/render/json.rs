@@ -114,8 +114,9 @@
 //!                   "parameters", "unknowns", "equations", "blocks", "largest_block",
 //!                   "dimension", "functional_rank": int | null (of the basis: as for
 //!                   "exceptional_values", null for no integral), "functional_rank_exact": bool
-//!                   | null, "by_momenta_degree": [int] (≤ j), "counts": [[int]]
-//!                   (momenta degree exactly j, order k), "by_poisson_degree": [int] (≤ j in
+//!                   | null, "functional_rank_bound": "flow" | "size" | "vanishing_minors" |
+//!                   null (what certifies it from above), "by_momenta_degree": [int] (≤ j),
+//!                   "counts": [[int]] (momenta degree exactly j, order k), "by_poisson_degree": [int] (≤ j in
 //!                   the Poisson variables), "poisson_counts": [[int]] (their degree exactly
 //!                   j, order k), "for_every_value": int,
 //!                   "shown": [ids], "new_only": { "known", "products", "generated",
@@ -609,6 +610,7 @@ fn search(f: &SearchFacts, section: u32) -> Value {
         "dimension": f.dimension,
         "functional_rank": f.functional_rank.map(|r| r.0),
         "functional_rank_exact": f.functional_rank.map(|r| r.1),
+        "functional_rank_bound": f.functional_rank_bound,
         "by_momenta_degree": f.by_momenta_degree,
         "counts": f.counts,
         "by_poisson_degree": f.by_poisson_degree,

@@ -7547,9 +7547,8 @@ fn every_search_says_the_functional_rank_of_its_basis() {
     assert!(
         normalize(&text).contains(
             "Dimension of the space of integrals: 20. By degree in the momenta: ≤ 0: 1, ≤ 1: 6, \
-             ≤ 2: 20. Functional rank: 4 where the condition holds (certified: a 4 × 4 minor \
-             of the Jacobian is nonzero, and integrals of a flow on the 5-dimensional level \
-             set have rank at most 4)."
+             ≤ 2: 20. Functional rank: 4, the most a flow on the 5-dimensional level set \
+             allows (maximal superintegrability)."
         ),
         "{text}"
     );
@@ -7558,6 +7557,7 @@ fn every_search_says_the_functional_rank_of_its_basis() {
     assert_eq!(found["dimension"], 20);
     assert_eq!(found["functional_rank"], 4);
     assert_eq!(found["functional_rank_exact"], true);
+    assert_eq!(found["functional_rank_bound"], "flow");
     let on = [
         "search",
         rotor,
@@ -7569,7 +7569,7 @@ fn every_search_says_the_functional_rank_of_its_basis() {
     ];
     let text = superint_ok(&on);
     assert!(
-        normalize(&text).contains("≤ 2: 20. Functional rank: 4 on the level set (certified:"),
+        normalize(&text).contains("≤ 2: 20. Functional rank: 4, the most a flow on the"),
         "{text}"
     );
     let generic = superint_json(&["search", rotor, "--no-timings"]);
@@ -7633,8 +7633,8 @@ fn maximal_superintegrability_is_certified_by_the_flow_without_minors() {
     assert!(
         text.contains(
             "Dimension of the space of integrals: 14. By degree in the momenta: ≤ 0: 1, ≤ 1: \
-             4, ≤ 2: 14. Functional rank: 5 (certified: a 5 × 5 minor of the Jacobian is \
-             nonzero, and integrals of a flow in 6 phase variables have rank at most 5)."
+             4, ≤ 2: 14. Functional rank: 5, the most a flow in 6 phase variables allows \
+             (maximal superintegrability)."
         ),
         "{text}"
     );
@@ -7651,10 +7651,13 @@ fn maximal_superintegrability_is_certified_by_the_flow_without_minors() {
     ];
     let text = normalize(&superint_ok(&resonance));
     assert!(
-        text.contains("and integrals of a flow on the 5-dimensional level set"),
+        text.contains("Functional rank: 4, the most a flow on the 5-dimensional level set"),
         "{text}"
     );
-    assert!(!text.contains("minors bordering it vanish"), "{text}");
+    assert_eq!(
+        superint_json(&resonance)["searches"][0]["functional_rank_bound"],
+        "flow"
+    );
 }
 
 /// A rank below the dimension, where the flow does not bound it: the dipole rotor at momenta
@@ -7667,14 +7670,40 @@ fn dipole_rotor_search_has_rank_two_below_its_dimension() {
     let args: Vec<&str> = command.split_whitespace().collect();
     let text = normalize(&superint_ok(&args));
     assert!(
-        text.contains(
-            "≤ 3: 4. Functional rank: 2 (certified: a 2 × 2 minor of the Jacobian is \
-             nonzero, the 8 minors bordering it vanish)."
-        ),
+        text.contains("≤ 3: 4. Functional rank: 2 (certified by 8 vanishing minors)."),
         "{text}"
     );
     let json = superint_json(&args);
     assert_eq!(json["searches"][0]["dimension"], 4);
     assert_eq!(json["searches"][0]["functional_rank"], 2);
     assert_eq!(json["searches"][0]["functional_rank_exact"], true);
+    assert_eq!(
+        json["searches"][0]["functional_rank_bound"],
+        "vanishing_minors"
+    );
+}
+
+/// A rank that equals the number of phase variables says so as its reason: the Euler top at
+/// `I1 = I2 = I3 = 1`, whose Hamiltonian is a Casimir (its flow is zero, and bounds nothing),
+/// has 10 integrals of Poisson degree `≤ 2` of rank 3 in its 3 variables; JSON's bound is
+/// the size.
+#[test]
+fn euler_top_at_equal_moments_has_the_rank_of_its_variables() {
+    let args = [
+        "search",
+        "systems/euler-top.toml",
+        "--poisson-degree",
+        "2",
+        "--fix",
+        "I1=1,I2=1,I3=1",
+        "--no-timings",
+    ];
+    let text = normalize(&superint_ok(&args));
+    assert!(
+        text.contains("≤ 2: 10. Functional rank: 3 (as many as the phase variables)."),
+        "{text}"
+    );
+    let json = superint_json(&args);
+    assert_eq!(json["searches"][0]["functional_rank"], 3);
+    assert_eq!(json["searches"][0]["functional_rank_bound"], "size");
 }
