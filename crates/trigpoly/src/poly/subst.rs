@@ -326,12 +326,14 @@ impl<C: Coefficient> Poly<C> {
     ///
     /// ```
     /// use trigpoly::{Expr, Point, Rational, Vars};
-    /// let vars = Vars::builder().coordinate("x").coordinate("y").build().unwrap();
-    /// let (x, y) = (vars.lookup("x").unwrap(), vars.lookup("y").unwrap());
-    /// let f = Expr::parse("x^3*y - 2*y^2/3", &vars).unwrap();
+    /// let vars = Vars::builder().coordinate("x").coordinate("y").angle("theta").build().unwrap();
+    /// let [x, y, theta] = ["x", "y", "theta"].map(|name| vars.lookup(name).unwrap());
+    /// let f = Expr::parse(&vars, "x^3*y*cos(theta) - 2*y^2/3 + sin(2*theta)/x").unwrap();
     /// let point = Point::new(&vars).with(x, Rational::new(1, 2)).with(y, Rational::from(3));
-    /// let gradient = f.eval_gradient(&point, &[x, y]).unwrap().unwrap();
-    /// for (value, v) in gradient.iter().zip([x, y]) {
+    /// let point = point.with_angle(theta, Rational::new(3, 5), Rational::new(4, 5)).unwrap();
+    /// let gradient = f.eval_gradient(&point, &[x, y, theta]).unwrap().unwrap();
+    /// assert!(gradient.iter().all(|value| !value.is_zero()));
+    /// for (value, v) in gradient.iter().zip([x, y, theta]) {
     ///     assert_eq!(*value, f.derivative(v).unwrap().eval(&point).unwrap());
     /// }
     /// ```
