@@ -258,8 +258,8 @@ pub struct ValueFacts {
     pub dimension: usize,
     /// The section of the search at it.
     pub section: u32,
-    /// The functional rank of the basis there, and whether it is exact (else a lower bound).
-    pub functional_rank: (usize, bool),
+    /// The functional rank of the basis there, certified or a lower bound.
+    pub functional_rank: brackets::BoundedRank,
 }
 
 impl ValueFacts {
@@ -268,13 +268,13 @@ impl ValueFacts {
         value: String,
         dimension: usize,
         section: u32,
-        functional_rank: &brackets::BoundedRank,
+        functional_rank: brackets::BoundedRank,
     ) -> Self {
         ValueFacts {
             value,
             dimension,
             section,
-            functional_rank: (functional_rank.rank(), functional_rank.is_exact()),
+            functional_rank,
         }
     }
 }
@@ -360,13 +360,10 @@ pub struct SearchFacts {
     pub largest_block: usize,
     /// The dimension of the space of integrals.
     pub dimension: usize,
-    /// The functional rank of its basis ([`brackets::search::basis_rank`]) and whether it
-    /// is certified from above (else a lower bound); `None` for no integral or where it could
-    /// not be certified.
-    pub functional_rank: Option<(usize, bool)>,
-    /// What certifies that rank from above ([`brackets::UpperBound::name`]: `flow`, `size`,
-    /// `vanishing_minors`); `None` where it is a lower bound or there is none.
-    pub functional_rank_bound: Option<&'static str>,
+    /// The functional rank of its basis ([`brackets::search::basis_rank`]), certified (its
+    /// upper bound named in JSON by [`brackets::UpperBound::name`]) or a lower bound; `None`
+    /// for no integral or where it could not be certified.
+    pub functional_rank: Option<brackets::BoundedRank>,
     /// `by_momenta_degree[j]`: the dimension of the integrals of momenta degree `≤ j`.
     pub by_momenta_degree: Vec<usize>,
     /// `counts[j][k]`: basis integrals of momenta degree exactly `j` and trigonometric order `k`.

@@ -232,8 +232,11 @@ pub fn exceptional_values_report(
         },
     }));
     if facts {
-        let value = |k: usize, v: &trigpoly::Rational, r: &brackets::search::SearchResult, rank| {
-            ValueFacts::new(v.to_string(), r.basis.len(), section_of(k), rank)
+        let value = |k: usize,
+                     v: &trigpoly::Rational,
+                     r: &brackets::search::SearchResult,
+                     rank: &brackets::BoundedRank| {
+            ValueFacts::new(v.to_string(), r.basis.len(), section_of(k), rank.clone())
         };
         entries.push(Entry::Data(Facts::ExceptionalValues(
             ExceptionalFacts::new(

@@ -498,7 +498,8 @@ fn left_out_text(r: &SearchResult) -> String {
 /// ` Functional rank: 4, the most a flow in 5 phase variables allows (maximal
 /// superintegrability).`, the functional rank of a search's basis ([`basis_rank`]) as the
 /// dimension line says it: the number and why nothing larger is possible (the flow's bound,
-/// the number of integrals or of coordinates, or how many bordering minors vanish), or `at
+/// the number of integrals or of coordinates, how many bordering minors vanish, or the known
+/// integrals that generate every integral and their rank), or `at
 /// least` the lower bound; on a level set, said where it is taken (as `--find-values` takes
 /// it). The certificate's minor and point are in JSON (`functional_rank_bound`).
 fn functional_rank_text(rank: &BoundedRank, space: &PhaseSpace, r: &SearchResult) -> String {
@@ -528,6 +529,20 @@ fn functional_rank_text(rank: &BoundedRank, space: &PhaseSpace, r: &SearchResult
         }
         UpperBound::VanishingMinors { count } => {
             format!(" (certified by {})", counted(count, "vanishing minor"))
+        }
+        // Only where `--new-only` found none new ([`basis_rank`]).
+        UpperBound::Generated { .. } => {
+            let known = (r.new.iter().flat_map(|n| &n.known))
+                .map(|name| format!("`{name}`"))
+                .collect::<Vec<_>>();
+            let (integrals, generate, their) = match known.len() {
+                1 => ("integral", "generates", "its"),
+                _ => ("integrals", "generate", "their"),
+            };
+            format!(
+                " (the known {integrals} {} {generate} every integral, and {their} rank is {k})",
+                listed(&known)
+            )
         }
         _ if k == r.basis.len() => format!(" (all {k} integrals independent)"),
         _ => " (as many as the phase variables)".to_string(),
@@ -1247,11 +1262,7 @@ impl Shared {
             blocks: r.components,
             largest_block: r.largest_component,
             dimension: r.basis.len(),
-            functional_rank: rank.map(|rank| (rank.rank(), rank.is_exact())),
-            functional_rank_bound: match rank {
-                Some(BoundedRank::Exact(cert)) => Some(cert.upper.name()),
-                _ => None,
-            },
+            functional_rank: rank.cloned(),
             by_momenta_degree: r.dimensions_by_momenta_degree(),
             counts: r.counts(),
             by_poisson_degree: r.dimensions_by_poisson_degree(),

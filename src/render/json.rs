@@ -115,7 +115,8 @@
 //!                   "dimension", "functional_rank": int | null (of the basis: as for
 //!                   "exceptional_values", null for no integral), "functional_rank_exact": bool
 //!                   | null, "functional_rank_bound": "flow" | "size" | "vanishing_minors" |
-//!                   null (what certifies it from above), "by_momenta_degree": [int] (≤ j),
+//!                   "generated" | null (what certifies it from above; "generated": the known
+//!                   integrals generate every integral, and their rank is the same), "by_momenta_degree": [int] (≤ j),
 //!                   "counts": [[int]] (momenta degree exactly j, order k), "by_poisson_degree": [int] (≤ j in
 //!                   the Poisson variables), "poisson_counts": [[int]] (their degree exactly
 //!                   j, order k), "for_every_value": int,
@@ -187,7 +188,7 @@ use crate::report::{
     ExceptionalFacts, Facts, ParameterFacts, ProofResult, RankResult, Report, SearchFacts,
     TableResult, TowerResult, ValueFacts,
 };
-use brackets::Entry as TableEntry;
+use brackets::{BoundedRank, Entry as TableEntry};
 
 /// The schema's name and version.
 pub const SCHEMA: &str = "superint-report/1";
@@ -608,9 +609,12 @@ fn search(f: &SearchFacts, section: u32) -> Value {
         "blocks": f.blocks,
         "largest_block": f.largest_block,
         "dimension": f.dimension,
-        "functional_rank": f.functional_rank.map(|r| r.0),
-        "functional_rank_exact": f.functional_rank.map(|r| r.1),
-        "functional_rank_bound": f.functional_rank_bound,
+        "functional_rank": f.functional_rank.as_ref().map(BoundedRank::rank),
+        "functional_rank_exact": f.functional_rank.as_ref().map(BoundedRank::is_exact),
+        "functional_rank_bound": match &f.functional_rank {
+            Some(BoundedRank::Exact(cert)) => Some(cert.upper.name()),
+            _ => None,
+        },
         "by_momenta_degree": f.by_momenta_degree,
         "counts": f.counts,
         "by_poisson_degree": f.by_poisson_degree,
@@ -659,8 +663,8 @@ fn exceptional_values(f: &ExceptionalFacts, section: u32) -> Value {
             "value": v.value,
             "dimension": v.dimension,
             "section": v.section,
-            "functional_rank": v.functional_rank.0,
-            "functional_rank_exact": v.functional_rank.1,
+            "functional_rank": v.functional_rank.rank(),
+            "functional_rank_exact": v.functional_rank.is_exact(),
         })
     };
     json!({

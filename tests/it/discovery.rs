@@ -7683,6 +7683,62 @@ fn dipole_rotor_search_has_rank_two_below_its_dimension() {
     );
 }
 
+/// Where `--new-only` finds that the known integrals generate every integral, each is a
+/// polynomial in them and the basis's rank is at most theirs: the dipole rotor's 9 integrals
+/// at momenta, positions and order 4 have rank 2 exactly, that of `H` and `J` (the 9 × 6
+/// Jacobian has 28 bordering minors, past a plain search's 16, so without `--new-only` the
+/// same search says `at least 2`). Where some integral is new the bound does not apply: the
+/// harmonic rotor at `p_θ = Iω` keeps the flow's bound; and where the flow's bound is the
+/// same, as the 3D Kepler problem's rank 5, it is the flow's.
+#[test]
+fn known_integrals_that_generate_every_integral_bound_the_rank() {
+    let command = "search systems/dipole-rotor.toml --fix M=2,omega=3,I=5,epsilon=7 \
+                   --momenta-degree 4 --positions-degree 4 --trig-degree 4 --no-timings";
+    let plain: Vec<&str> = command.split_whitespace().collect();
+    let new_only = [&plain[..], &["--new-only"]].concat();
+    let text = normalize(&superint_ok(&new_only));
+    assert!(
+        text.contains(
+            "≤ 4: 9. Functional rank: 2 (the known integrals H and J generate every integral, \
+             and their rank is 2)."
+        ),
+        "{text}"
+    );
+    assert!(
+        text.contains("None: the known integrals generate every integral in the space."),
+        "{text}"
+    );
+    let json = superint_json(&new_only);
+    assert_eq!(json["searches"][0]["dimension"], 9);
+    assert_eq!(json["searches"][0]["functional_rank"], 2);
+    assert_eq!(json["searches"][0]["functional_rank_exact"], true);
+    assert_eq!(json["searches"][0]["functional_rank_bound"], "generated");
+    let text = normalize(&superint_ok(&plain));
+    assert!(
+        text.contains("≤ 4: 9. Functional rank: at least 2."),
+        "{text}"
+    );
+    let json = superint_json(&plain);
+    assert_eq!(json["searches"][0]["functional_rank_exact"], false);
+    assert_eq!(
+        json["searches"][0]["functional_rank_bound"],
+        serde_json::Value::Null
+    );
+    let text = normalize(&superint_ok_line(
+        "search systems/harmonic-rotor.toml --when 'p_theta = I*omega' --new-only --no-timings",
+    ));
+    assert!(text.contains("New integrals:"), "{text}");
+    assert!(
+        text.contains("Functional rank: 4, the most a flow on the 5-dimensional level set"),
+        "{text}"
+    );
+    let kepler = "search systems/kepler-3d.toml --momenta-degree 2 --positions-degree 1 \
+                  --new-only --no-timings";
+    let json = superint_json(&kepler.split_whitespace().collect::<Vec<_>>());
+    assert_eq!(json["searches"][0]["functional_rank"], 5);
+    assert_eq!(json["searches"][0]["functional_rank_bound"], "flow");
+}
+
 /// A rank that equals the number of phase variables says so as its reason: the Euler top at
 /// `I1 = I2 = I3 = 1`, whose Hamiltonian is a Casimir (its flow is zero, and bounds nothing),
 /// has 10 integrals of Poisson degree `≤ 2` of rank 3 in its 3 variables; JSON's bound is

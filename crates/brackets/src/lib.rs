@@ -51,8 +51,8 @@ pub use error::{EngineError, EngineLimit, JacobiViolation};
 pub use inputs::{Input, Recording};
 pub use phase::{CanonicalPair, DeclaredBracket, Gradient, PhaseSpace};
 pub use rank::{
-    integrals_rank_within, level_set_coordinates, rank, rank_on, rank_restricted, rank_within,
-    BoundedRank, RankCertificate, UpperBound,
+    generated_rank_within, integrals_rank_within, level_set_coordinates, rank, rank_on,
+    rank_restricted, rank_within, BoundedRank, RankCertificate, UpperBound,
 };
 pub use search::{search, Integral, SearchOptions, SearchResult, SearchSpace, SpaceVariables};
 pub use system::{NamedFunction, System};

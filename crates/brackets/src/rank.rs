@@ -35,11 +35,18 @@ pub enum UpperBound {
     /// gradient annihilates the Hamiltonian vector field, so where it is not zero the
     /// gradients span at most a hyperplane (maximal superintegrability is exactly this rank).
     Flow,
+    /// Each function is a polynomial in `by` generators whose rank is this one
+    /// ([`generated_rank_within`]): by the chain rule each gradient is a combination of
+    /// theirs, so the rank is at most theirs.
+    Generated {
+        /// How many generators.
+        by: usize,
+    },
 }
 
 impl UpperBound {
-    /// The kind of bound as one lowercase word, as superint's JSON reports it: `size` or
-    /// `vanishing_minors`. A program that reads a bound by its name and [`UpperBound::minors`]
+    /// The kind of bound as one lowercase word, as superint's JSON reports it: `size`,
+    /// `vanishing_minors`, `flow` or `generated`. A program that reads a bound by its name and [`UpperBound::minors`]
     /// reads every kind, one added later too (the enum is open to new kinds of proof).
     ///
     /// ```
@@ -61,6 +68,7 @@ impl UpperBound {
             UpperBound::Size => "size",
             UpperBound::VanishingMinors { .. } => "vanishing_minors",
             UpperBound::Flow => "flow",
+            UpperBound::Generated { .. } => "generated",
         }
     }
 
@@ -68,7 +76,7 @@ impl UpperBound {
     /// for a bound that expands none.
     pub fn minors(&self) -> Option<usize> {
         match self {
-            UpperBound::Size | UpperBound::Flow => None,
+            UpperBound::Size | UpperBound::Flow | UpperBound::Generated { .. } => None,
             UpperBound::VanishingMinors { count } => Some(*count),
         }
     }
@@ -93,6 +101,13 @@ impl std::fmt::Display for UpperBound {
             UpperBound::Flow => f.write_str(
                 "integrals of a flow that is not identically zero have a rank at most the \
                  number of coordinates less one",
+            ),
+            UpperBound::Generated { by: 1 } => {
+                f.write_str("the functions are polynomials in one function of this rank")
+            }
+            UpperBound::Generated { by } => write!(
+                f,
+                "the functions are polynomials in {by} functions whose rank is this one"
             ),
         }
     }
@@ -299,7 +314,14 @@ pub fn rank_within(
     functions: &[Expr],
     max_minors: usize,
 ) -> Result<BoundedRank, EngineError> {
-    rank_bounded_by(space, functions, space.coordinates(), None, max_minors)
+    rank_bounded_by(
+        space,
+        functions,
+        space.coordinates(),
+        None,
+        max_minors,
+        None,
+    )
 }
 
 /// [`rank_within`] for integrals of the flow of `hamiltonian` (each `F` with `{F, H} = 0`
@@ -347,10 +369,95 @@ pub fn integrals_rank_within(
     condition: Option<&Condition>,
     max_minors: usize,
 ) -> Result<BoundedRank, EngineError> {
-    match flow_by_free_coordinates(space, integrals, hamiltonian, condition)? {
-        Some((coords, flow)) => rank_bounded_by(space, integrals, coords, Some(&flow), max_minors),
-        None => rank_within(space, integrals, max_minors),
-    }
+    generated_rank_within(
+        space,
+        integrals,
+        &[],
+        Some(hamiltonian),
+        condition,
+        max_minors,
+    )
+}
+
+/// [`integrals_rank_within`] (or [`rank_within`] without a Hamiltonian) of functions each of
+/// which is a polynomial in `generators` (where the condition holds; the caller vouches for
+/// it, as `--new-only` decides it when the known integrals generate every integral found):
+/// by the chain rule each gradient is a combination of the generators', so the rank is at
+/// most theirs. Their rank is taken first, the same way (the same coordinates, the same flow;
+/// they are integrals too), at most `max_minors` bordering minors; where it is exact and the
+/// functions' lower bound meets it, their rank is exact ([`UpperBound::Generated`], or the
+/// flow's where that bound is the same). No generators: [`integrals_rank_within`] itself.
+///
+/// ```
+/// use brackets::{generated_rank_within, systems, BoundedRank, UpperBound};
+/// use trigpoly::Expr;
+///
+/// // L, L², L³, L⁴ are polynomials in L alone: rank 1, however many.
+/// let rotor = systems::harmonic_rotor();
+/// let l = rotor.get("L").cloned()?;
+/// let mut powers: Vec<Expr> = vec![l.clone()];
+/// for _ in 1..4 {
+///     let next = powers[powers.len() - 1].checked_mul(&l)?;
+///     powers.push(next);
+/// }
+/// let h = rotor.hamiltonian();
+/// let rank = generated_rank_within(rotor.space(), &powers, &[l], Some(h), None, 0)?;
+/// assert!(matches!(rank, BoundedRank::Exact(ref c)
+///     if c.rank == 1 && c.upper == UpperBound::Generated { by: 1 }));
+/// // Without the generators: at least 1, no bordering minor being allowed.
+/// let alone = generated_rank_within(rotor.space(), &powers, &[], Some(h), None, 0)?;
+/// assert_eq!(alone, BoundedRank::AtLeast(1));
+/// # Ok::<(), brackets::EngineError>(())
+/// ```
+pub fn generated_rank_within(
+    space: &PhaseSpace,
+    functions: &[Expr],
+    generators: &[Expr],
+    hamiltonian: Option<&Expr>,
+    condition: Option<&Condition>,
+    max_minors: usize,
+) -> Result<BoundedRank, EngineError> {
+    let route = match hamiltonian {
+        Some(h) => flow_by_free_coordinates(space, functions, h, condition)?,
+        None => None,
+    };
+    let (coords, flow) = match route {
+        Some((coords, flow)) => (coords, Some(flow)),
+        None => (space.coordinates(), None),
+    };
+    let generated = match generators.is_empty() {
+        true => None,
+        false => match rank_bounded_by(
+            space,
+            generators,
+            coords.clone(),
+            flow.as_deref(),
+            max_minors,
+            None,
+        )? {
+            BoundedRank::Exact(cert) => Some(Generators {
+                count: generators.len(),
+                rank: cert.rank,
+            }),
+            BoundedRank::AtLeast(_) => None,
+        },
+    };
+    rank_bounded_by(
+        space,
+        functions,
+        coords,
+        flow.as_deref(),
+        max_minors,
+        generated,
+    )
+}
+
+/// How many functions generate those whose rank is taken, and their certified rank, which
+/// bounds it ([`generated_rank_within`]).
+#[derive(Clone, Copy, Debug)]
+struct Generators {
+    count: usize,
+    rank: usize,
 }
 
 /// Coordinates and the components of a Hamiltonian vector field along them.
@@ -410,7 +517,7 @@ fn rank_by(
     functions: &[Expr],
     coords: Vec<Var>,
 ) -> Result<RankCertificate, EngineError> {
-    match rank_bounded_by(space, functions, coords, None, usize::MAX)? {
+    match rank_bounded_by(space, functions, coords, None, usize::MAX, None)? {
         BoundedRank::Exact(cert) => Ok(cert),
         BoundedRank::AtLeast(_) => unreachable!("every bordering minor may be expanded"),
     }
@@ -420,20 +527,31 @@ fn rank_by(
 /// above where at most `max_minors` minors border the nonzero one, or where it is one less
 /// than the coordinates and `flow` (the components `{z, H}` of a Hamiltonian vector field the
 /// functions are integrals of, by `coords`) is nonzero at a sample point
-/// ([`integrals_rank_within`]).
+/// ([`integrals_rank_within`]), or where it is the rank of `generated`'s functions, which
+/// generate these ([`generated_rank_within`]).
 fn rank_bounded_by(
     space: &PhaseSpace,
     functions: &[Expr],
     coords: Vec<Var>,
     flow: Option<&[Expr]>,
     max_minors: usize,
+    generated: Option<Generators>,
 ) -> Result<BoundedRank, EngineError> {
     // Lower bound: the best rank over a few exact points, then over a few more off the line
     // of the first four (cheap beside any symbolic minor).
     let size = functions.len().min(coords.len());
-    // The most the rank can be: the size, or one less than the coordinates once the flow is
-    // seen to be nonzero at a sample point.
-    let mut full = size;
+    // The most the rank can be: the size, the generators' rank, or one less than the
+    // coordinates once the flow is seen to be nonzero at a sample point.
+    let mut full = generated.map_or(size, |g| size.min(g.rank));
+    // Why, where it is less than the size: the flow's bound where it is that, else the
+    // generators'.
+    let below_size = |full: usize, moved: bool| match moved && full + 1 == coords.len() {
+        true => UpperBound::Flow,
+        false => UpperBound::Generated {
+            by: generated.map_or(0, |g| g.count),
+        },
+    };
+    let mut moved = false;
     let mut best: Option<RankCertificate> = None;
     for index in 0..FIRST_POINTS + EARLY_POINTS {
         if index >= FIRST_POINTS && best.as_ref().is_some_and(|b| b.rank == full) {
@@ -447,19 +565,25 @@ fn rank_bounded_by(
             None => false,
         };
         if moves {
+            moved = true;
             full = full.min(coords.len() - 1);
         }
         // At one of the first points where the flow moves, the functions' gradients are
         // evaluated one at a time and kept where they raise the rank there, and the rank is
         // certified as soon as they reach the flow's bound: a search's basis of a thousand
         // integrals reaches it within its first few, and the others are never evaluated.
+        // So too below the generators' rank.
+        let bounded = moves || generated.is_some_and(|g| g.rank == full);
         let flow_bound =
-            (moves && index < FIRST_POINTS && functions.len() > full && full > 0).then_some(full);
+            (bounded && index < FIRST_POINTS && functions.len() > full && full > 0).then_some(full);
         let (values, kept) = values_at(space, functions, &coords, &point.0, flow_bound)?;
         if flow_bound.is_some_and(|bound| kept.len() == bound) {
             let mut cert = certificate_of(values, &coords, point);
             cert.minor_rows = cert.minor_rows.iter().map(|&k| kept[k]).collect();
-            cert.upper = UpperBound::Flow;
+            cert.upper = match full < size {
+                true => below_size(full, moved),
+                false => UpperBound::Size,
+            };
             return Ok(BoundedRank::Exact(cert));
         }
         let cert = certificate_of(values, &coords, point);
@@ -557,7 +681,7 @@ fn rank_bounded_by(
         }
     }
     if cert.rank == full && full < size {
-        cert.upper = UpperBound::Flow;
+        cert.upper = below_size(full, moved);
     }
     Ok(BoundedRank::Exact(cert))
 }

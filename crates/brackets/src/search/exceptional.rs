@@ -102,7 +102,7 @@ use crate::claim::Condition;
 use crate::error::{EngineError, EngineLimit};
 use crate::modular::{big_mod, inverse_mod, mul_mod, previous_prime, Modulus, PRIME};
 use crate::phase::PhaseSpace;
-use crate::rank::{integrals_rank_within, rank_within, BoundedRank};
+use crate::rank::{generated_rank_within, rank_within, BoundedRank};
 use crate::system::System;
 use crate::univariate::{gcd_mod, is_square_free_mod, IntPoly, ResidueRing};
 
@@ -258,9 +258,12 @@ pub const SEARCH_RANK_MINORS: usize = 16;
 /// certified from above first by what costs no symbolic minor: the size (`rank ≤ N` integrals,
 /// `≤ n` phase variables), and, where every integral is proved at the fixed
 /// values, the flow of `H` there (`rank ≤ n − 1` where `X_H` is not identically zero, on the
-/// level set of a condition that sets phase variables: [`integrals_rank_within`]); else the
+/// level set of a condition that sets phase variables: [`crate::integrals_rank_within`]); else the
 /// bordering minors, at most `max_minors` of them ([`SEARCH_RANK_MINORS`] in a plain search),
-/// else `at least` the lower bound.
+/// else `at least` the lower bound. Where `--new-only` found that the known integrals generate
+/// every integral (none is new), each is a polynomial in them, and their rank, taken the same
+/// way, bounds the basis's ([`generated_rank_within`]); not on a level set, where they
+/// generate it modulo its polynomial alone.
 /// On a level set (`--on`) the integrals are integrals modulo its polynomial: the flow bounds
 /// their rank on it where it is a graph ([`level_set_graph_variable`]), and nowhere else.
 pub fn basis_rank(
@@ -272,8 +275,16 @@ pub fn basis_rank(
     let space = system.space();
     let functions: Vec<Expr> = found.basis.iter().map(|i| i.fixed.clone()).collect();
     let graph = level_set_graph(space, found)?;
-    if (found.on.is_some() && graph.is_none()) || !found.basis.iter().all(|i| i.proved_fixed) {
+    // The known integrals, where they generate every integral found.
+    let generators = match &found.new {
+        Some(n) if n.new.is_empty() && found.on.is_none() => &n.known_integrals[..],
+        _ => &[],
+    };
+    if found.on.is_some() && graph.is_none() {
         return rank_within(space, &functions, max_minors);
+    }
+    if !found.basis.iter().all(|i| i.proved_fixed) {
+        return generated_rank_within(space, &functions, generators, None, None, max_minors);
     }
     let h = fix_parameters(system.hamiltonian(), &found.parameters)?;
     let condition = match (&options.condition, graph) {
@@ -286,7 +297,14 @@ pub fn basis_rank(
         }
         (None, None) => None,
     };
-    integrals_rank_within(space, &functions, &h, condition.as_ref(), max_minors)
+    generated_rank_within(
+        space,
+        &functions,
+        generators,
+        Some(&h),
+        condition.as_ref(),
+        max_minors,
+    )
 }
 
 /// The level set of a search as the graph of its [`level_set_graph_variable`] `v` over the

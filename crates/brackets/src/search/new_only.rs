@@ -82,6 +82,7 @@ pub(super) fn new_integrals(
         .collect::<Result<Vec<_>, EngineError>>()?;
     Ok(NewIntegrals {
         known: known_names,
+        known_integrals: known.iter().map(|(f, _)| f.clone()).collect(),
         generated: basis.len() - new.len(),
         new,
         multipliers,

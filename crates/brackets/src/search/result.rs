@@ -117,6 +117,10 @@ pub struct NewIntegrals {
     /// each as it prints: a function by its display as the expressions write it (`ω3` of a
     /// function `omega3`, as [`trigpoly::shown_text`] writes it), a given one by its name.
     pub known: Vec<String>,
+    /// The known integrals themselves, in the order of [`NewIntegrals::known`]: at the fixed
+    /// values, restricted to the condition, in the unknowns' monomials (as a basis integral's
+    /// [`Integral::fixed`]).
+    pub known_integrals: Vec<Expr>,
     /// The dimension of the span of the known integrals and of all products of known and found
     /// integrals that lie in the space.
     pub generated: usize,
