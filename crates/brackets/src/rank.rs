@@ -34,6 +34,10 @@ pub enum UpperBound {
     /// of a Hamiltonian flow that is not identically zero ([`integrals_rank_within`]): each
     /// gradient annihilates the Hamiltonian vector field, so where it is not zero the
     /// gradients span at most a hyperplane (maximal superintegrability is exactly this rank).
+    /// The coordinates are the phase variables, or on a level set the flow keeps (a `--when`
+    /// or a graph `--on` that sets phase variables) those it leaves free, with the field
+    /// restricted to it; on a Lie–Poisson space (a top) the bound holds as it is, a Casimir's
+    /// gradient annihilating every Hamiltonian vector field too.
     Flow,
     /// Each function is a polynomial in `by` generators whose rank is this one
     /// ([`generated_rank_within`]): by the chain rule each gradient is a combination of
