@@ -576,12 +576,12 @@ fn rank_bounded_by(
         // evaluated one at a time and kept where they raise the rank there, and the rank is
         // certified as soon as they reach the flow's bound: a search's basis of a thousand
         // integrals reaches it within its first few, and the others are never evaluated.
-        // So too below the generators' rank.
+        // So too at the generators' rank: `stop_at` is the bound reached, the flow's or theirs.
         let bounded = moves || generated.is_some_and(|g| g.rank == full);
-        let flow_bound =
+        let stop_at =
             (bounded && index < FIRST_POINTS && functions.len() > full && full > 0).then_some(full);
-        let (values, kept) = values_at(space, functions, &coords, &point.0, flow_bound)?;
-        if flow_bound.is_some_and(|bound| kept.len() == bound) {
+        let (values, kept) = values_at(space, functions, &coords, &point.0, stop_at)?;
+        if stop_at.is_some_and(|bound| kept.len() == bound) {
             let mut cert = certificate_of(values, &coords, point);
             cert.minor_rows = cert.minor_rows.iter().map(|&k| kept[k]).collect();
             cert.upper = match full < size {
