@@ -6,8 +6,9 @@ use crate::render::Format;
 use std::time::Instant;
 
 use brackets::search::{
-    basis_rank, fix_parameters, level_set_graph_variable, search, Integral, NewIntegrals,
-    SearchOptions, SearchResult, SearchSpace, SearchedLevel, MAX_RANK_MINORS, SEARCH_RANK_MINORS,
+    basis_rank, fix_parameters, level_set_graph_variable, search, BasisGenerators, Integral,
+    NewIntegrals, SearchOptions, SearchResult, SearchSpace, SearchedLevel, MAX_RANK_MINORS,
+    SEARCH_RANK_MINORS,
 };
 use brackets::{BoundedRank, EngineError, PhaseSpace, System, UpperBound};
 use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, Vars};
@@ -498,11 +499,16 @@ fn left_out_text(r: &SearchResult) -> String {
 /// ` Functional rank: 4, the most a flow in 5 phase variables allows (maximal
 /// superintegrability).`, the functional rank of a search's basis ([`basis_rank`]) as the
 /// dimension line says it: the number and why nothing larger is possible (the flow's bound,
-/// the number of integrals or of coordinates, how many bordering minors vanish, or the known
-/// integrals that generate every integral and their rank), or `at
+/// the number of integrals or of coordinates, how many bordering minors vanish, or what
+/// generates every integral and its rank: [`generated_text`]), or `at
 /// least` the lower bound; on a level set, said where it is taken (as `--find-values` takes
 /// it). The certificate's minor and point are in JSON (`functional_rank_bound`).
-fn functional_rank_text(rank: &BoundedRank, space: &PhaseSpace, r: &SearchResult) -> String {
+fn functional_rank_text(
+    rank: &BoundedRank,
+    space: &PhaseSpace,
+    r: &SearchResult,
+    shared: &Shared,
+) -> String {
     // A condition that fixes a momentum leaves it out: the rank is that where it holds.
     let taken = match (&r.on, level_set_graph_variable(space, r)) {
         (None, _) if r.variables.left_out.is_empty() => "",
@@ -530,24 +536,52 @@ fn functional_rank_text(rank: &BoundedRank, space: &PhaseSpace, r: &SearchResult
         UpperBound::VanishingMinors { count } => {
             format!(" (certified by {})", counted(count, "vanishing minor"))
         }
-        // Only where `--new-only` found none new ([`basis_rank`]).
-        UpperBound::Generated { .. } => {
-            let known = (r.new.iter().flat_map(|n| &n.known))
-                .map(|name| format!("`{name}`"))
-                .collect::<Vec<_>>();
-            let (integrals, generate, their) = match known.len() {
-                1 => ("integral", "generates", "its"),
-                _ => ("integrals", "generate", "their"),
-            };
-            format!(
-                " (the known {integrals} {} {generate} every integral, and {their} rank is {k})",
-                listed(&known)
-            )
-        }
+        // What generates every integral ([`basis_rank`]).
+        UpperBound::Generated { .. } => generated_text(r, shared, k),
         _ if k == r.basis.len() => format!(" (all {k} integrals independent)"),
         _ => " (as many as the phase variables)".to_string(),
     };
     format!(" Functional rank: {k}{taken}{why}.")
+}
+
+/// Why the rank is at most `k` where what generates every integral has that rank
+/// ([`BasisGenerators`]): ` (the known integrals `H` and `L` generate every integral, and their
+/// rank is 2)`, with the new ones where there are some, or ` (the generators over the
+/// polynomials in `A, B, C`, `I1` and `I11`, have rank 1)`.
+fn generated_text(r: &SearchResult, shared: &Shared, k: usize) -> String {
+    let labels = |indices: &[usize]| -> Vec<String> {
+        (indices.iter())
+            .map(|&i| format!("`{}`", shared.label(i)))
+            .collect()
+    };
+    match (BasisGenerators::of(r), &r.new, &r.module, &shared.symbolic) {
+        (Some(BasisGenerators::Module), _, Some(m), Some(names)) => format!(
+            " (the generators over the polynomials in `{names}`, {}, have rank {k})",
+            listed(&labels(&m.generators))
+        ),
+        (_, Some(n), _, _) => {
+            let known = (n.known.iter())
+                .map(|name| format!("`{name}`"))
+                .collect::<Vec<_>>();
+            let new = labels(&n.new);
+            let (generate, their) = match known.len() + new.len() {
+                1 => ("generates", "its"),
+                _ => ("generate", "their"),
+            };
+            let named = |what: &str, names: &[String]| match names.len() {
+                0 => None,
+                1 => Some(format!("the {what} integral {}", listed(names))),
+                _ => Some(format!("the {what} integrals {}", listed(names))),
+            };
+            let both = [named("known", &known), named("new", &new)]
+                .into_iter()
+                .flatten()
+                .collect::<Vec<_>>()
+                .join(" and ");
+            format!(" ({both} {generate} every integral, and {their} rank is {k})")
+        }
+        _ => String::new(),
+    }
 }
 
 /// ` By degree in the momenta: ≤ 0: 1, ≤ 1: 6.`, `dims[j]` integrals of degree `≤ j` (`what`:
@@ -1155,7 +1189,7 @@ impl Shared {
             .flatten();
         let rank_text = rank
             .as_ref()
-            .map(|rank| functional_rank_text(rank, system.space(), r))
+            .map(|rank| functional_rank_text(rank, system.space(), r, self))
             .unwrap_or_default();
         entries.extend(self.dimensions(r, vars, &rank_text));
         entries.extend(positions_degree_hint(system, options, r, self.caller));

@@ -7763,3 +7763,79 @@ fn euler_top_at_equal_moments_has_the_rank_of_its_variables() {
     assert_eq!(json["searches"][0]["functional_rank"], 3);
     assert_eq!(json["searches"][0]["functional_rank_bound"], "size");
 }
+
+/// Where a `--when` sets parameters (`ω₋ = 0`, `ω₊ = 2ω₋`), the flow bounds the rank with them
+/// set in `H`, as where it sets a momentum alone, and with parameters kept symbolic it holds
+/// for every value of them: the Fock–Darwin system at `ω₋ = 0` with `M, ω₊` symbolic has rank
+/// 3 of 4, and the Fock–Darwin rotor at `ω₊ = 2ω₋, p_θ = 2Iω₋` rank 4 on its 5-dimensional
+/// level set (both said `at least` before, their bordering minors past 16).
+#[test]
+fn a_condition_setting_parameters_keeps_the_flows_bound_on_the_rank() {
+    let fock_darwin = "search systems/fock-darwin.toml --when b=0 --momenta-degree 2 \
+                       --positions-degree 2 --trig-degree 0 --symbolic M,a --parameters-degree 2 \
+                       --no-timings";
+    let args: Vec<&str> = fock_darwin.split_whitespace().collect();
+    let text = normalize(&superint_ok(&args));
+    assert!(
+        text.contains(
+            "Functional rank: 3, the most a flow in 4 phase variables allows (maximal \
+             superintegrability)."
+        ),
+        "{text}"
+    );
+    let json = superint_json(&args);
+    assert_eq!(json["searches"][0]["functional_rank_bound"], "flow");
+    let rotor = "search systems/fock-darwin-rotor.toml --when a=2*b,p_theta=2*I*b \
+                 --momenta-degree 4 --positions-degree 4 --trig-degree 4 --new-only --no-timings";
+    let text = normalize(&superint_ok(&rotor.split_whitespace().collect::<Vec<_>>()));
+    assert!(
+        text.contains(
+            "Functional rank: 4, the most a flow on the 5-dimensional level set allows \
+             (maximal superintegrability)."
+        ),
+        "{text}"
+    );
+}
+
+/// What generates every integral bounds the rank by its own: `--new-only`'s known and new
+/// integrals (the Fock–Darwin rotor at `p_θ = Iω₊`, its integrals functions of `L`, `W
+/// e^{−iθ}` and its conjugate, rank 3 below the flow's 4), and with parameters kept symbolic
+/// the generators over the polynomials in them (Hénon–Heiles with `A, B, C` symbolic: 14
+/// integrals, all parameter multiples of `1` and `H`, rank 1). A plain search of fixed values
+/// knows no generation, and stays `at least` where the bordering minors are too many
+/// (`known_integrals_that_generate_every_integral_bound_the_rank`: the dipole rotor says
+/// `at least 2` without `--new-only`).
+#[test]
+fn generators_of_every_integral_bound_the_rank_by_theirs() {
+    let rotor = "search systems/fock-darwin-rotor.toml --when p_theta=I*a --momenta-degree 1 \
+                 --positions-degree 1 --trig-degree 1 --symbolic M,a,b --parameters-degree 2 \
+                 --new-only --no-timings";
+    let args: Vec<&str> = rotor.split_whitespace().collect();
+    let text = normalize(&superint_ok(&args));
+    assert!(
+        text.contains(
+            "Functional rank: 3 where the condition holds (the known integral L and the new \
+             integrals Φ21 and Φ22 generate every integral, and their rank is 3)."
+        ),
+        "{text}"
+    );
+    let json = superint_json(&args);
+    assert_eq!(json["searches"][0]["functional_rank"], 3);
+    assert_eq!(json["searches"][0]["functional_rank_exact"], true);
+    assert_eq!(json["searches"][0]["functional_rank_bound"], "generated");
+    let henon_heiles = "search systems/henon-heiles.toml --momenta-degree 2 --positions-degree 4 \
+                        --trig-degree 0 --symbolic A,B,C --no-timings";
+    let args: Vec<&str> = henon_heiles.split_whitespace().collect();
+    let text = normalize(&superint_ok(&args));
+    assert!(
+        text.contains(
+            "≤ 2: 14. Functional rank: 1 (the generators over the polynomials in A, B, C, I1 \
+             and I11, have rank 1)."
+        ),
+        "{text}"
+    );
+    assert_eq!(
+        superint_json(&args)["searches"][0]["functional_rank_bound"],
+        "generated"
+    );
+}

@@ -36,7 +36,7 @@ pub enum UpperBound {
     /// gradients span at most a hyperplane (maximal superintegrability is exactly this rank).
     /// The coordinates are the phase variables, or on a level set the flow keeps (a `--when`
     /// or a graph `--on` that sets phase variables) those it leaves free, with the field
-    /// restricted to it; on a Lie–Poisson space (a top) the bound holds as it is, a Casimir's
+    /// restricted to it, `H` at the parameters a `--when` sets; on a Lie–Poisson space (a top) the bound holds as it is, a Casimir's
     /// gradient annihilating every Hamiltonian vector field too.
     Flow,
     /// Each function is a polynomial in `by` generators whose rank is this one
@@ -339,12 +339,19 @@ pub fn rank_within(
 /// `X_H` is shown not to be identically zero by a nonzero component `{z, H}` at one of the
 /// exact sample points; where every one vanishes at those the bound is not used.
 ///
-/// With a condition that sets phase variables alone (`p_θ = Iω`), none of which the integrals
+/// With a condition that sets phase variables (`p_θ = Iω`), none of which the integrals
 /// hold, and whose level set the flow keeps (`{v − value, H}` vanishes on it for each `v` it
 /// sets), the rank is that of the integrals on the level set, by the variables it leaves free
 /// (the other columns are zero), and the same holds there with `X_H` restricted to it: at
-/// most one less than those variables. Any other condition leaves the flow out, and the rank
-/// is [`rank_within`]'s. A rank below the bound needs the bordering minors as
+/// most one less than those variables. Parameters the condition sets too (`ω₊ = 2ω₋`, none
+/// of which the integrals hold) are set in `H` first: a bracket differentiates no parameter,
+/// so `{F, H}` vanishing where the condition holds is `{F, H'}` vanishing on the level set,
+/// `H'` being `H` at them (a condition on parameters alone leaves the whole phase space).
+/// Parameters left free (kept symbolic) are variables of the exact points like the others:
+/// `{F, H'} = 0` for every value of them, so `X_H'` nonzero at one point is nonzero on a
+/// dense open set of phase space and parameters, where the gradients lie in a hyperplane.
+/// Any other condition (one setting an angle, or a parameter to a function of phase space)
+/// leaves the flow out, and the rank is [`rank_within`]'s. A rank below the bound needs the bordering minors as
 /// [`rank_within`] does, at most `max_minors` of them.
 ///
 /// ```
@@ -490,15 +497,32 @@ fn flow_by_free_coordinates(
         return Ok(None);
     };
     let subs = condition.subs();
-    let sets_phase_alone = set.len() == subs.len();
     let held = subs
         .iter()
         .any(|(v, _)| integrals.iter().any(|f| f.contains(*v)));
-    if !sets_phase_alone || held {
+    if held {
         return Ok(None);
     }
+    // The parameters the condition sets are set in `H` first: `{F, H}` vanishing where the
+    // condition holds is `{F, H'}` vanishing on the level set of its phase variables alone,
+    // `H'` being `H` at those parameters (a bracket differentiates no parameter, and no
+    // integral holds one the condition sets).
+    let parameters: Vec<(Var, Expr)> = (subs.iter())
+        .filter(|(v, _)| !set.contains(v))
+        .cloned()
+        .collect();
+    let hamiltonian = match parameters.is_empty() {
+        true => hamiltonian.clone(),
+        false => match Condition::all(&condition.to_string(), parameters)
+            .and_then(|c| c.apply(hamiltonian))
+        {
+            Ok(h) => h,
+            Err(_) => return Ok(None),
+        },
+    };
+    let moves = |z: &Expr| space.bracket(z, &hamiltonian);
     let on_level_set = |e: &Expr| condition.apply(e).ok();
-    for (v, value) in subs {
+    for (v, value) in subs.iter().filter(|(v, _)| set.contains(v)) {
         let leaves = moves(&Expr::var(vars, *v).checked_sub(value)?)?;
         if !on_level_set(&leaves).is_some_and(|e| e.is_zero()) {
             return Ok(None);

@@ -258,12 +258,17 @@ pub const SEARCH_RANK_MINORS: usize = 16;
 /// certified from above first by what costs no symbolic minor: the size (`rank ≤ N` integrals,
 /// `≤ n` phase variables), and, where every integral is proved at the fixed
 /// values, the flow of `H` there (`rank ≤ n − 1` where `X_H` is not identically zero, on the
-/// level set of a condition that sets phase variables: [`crate::integrals_rank_within`]); else the
+/// level set of a condition that sets phase variables, `H` at the parameters it sets:
+/// [`crate::integrals_rank_within`]); else the
 /// bordering minors, at most `max_minors` of them ([`SEARCH_RANK_MINORS`] in a plain search),
 /// else `at least` the lower bound. Where `--new-only` found that the known integrals generate
 /// every integral (none is new), each is a polynomial in them, and their rank, taken the same
 /// way, bounds the basis's ([`generated_rank_within`]); not on a level set, where they
-/// generate it modulo its polynomial alone.
+/// generate it modulo its polynomial alone. Where the rank is still not exact, it is taken
+/// again bounded by the rank of what [`BasisGenerators`] says generates the basis.
+/// Parameters kept symbolic are variables of the exact points like the phase variables:
+/// every integral is one for every value of them (where the condition holds), so the flow's
+/// bound holds at a generic value, and the rank is that over the functions of both.
 /// On a level set (`--on`) the integrals are integrals modulo its polynomial: the flow bounds
 /// their rank on it where it is a graph ([`level_set_graph_variable`]), and nowhere else.
 pub fn basis_rank(
@@ -275,36 +280,111 @@ pub fn basis_rank(
     let space = system.space();
     let functions: Vec<Expr> = found.basis.iter().map(|i| i.fixed.clone()).collect();
     let graph = level_set_graph(space, found)?;
-    // The known integrals, where they generate every integral found.
-    let generators = match &found.new {
-        Some(n) if n.new.is_empty() && found.on.is_none() => &n.known_integrals[..],
-        _ => &[],
-    };
     if found.on.is_some() && graph.is_none() {
         return rank_within(space, &functions, max_minors);
     }
-    if !found.basis.iter().all(|i| i.proved_fixed) {
-        return generated_rank_within(space, &functions, generators, None, None, max_minors);
-    }
-    let h = fix_parameters(system.hamiltonian(), &found.parameters)?;
-    let condition = match (&options.condition, graph) {
-        (_, Some(graph)) => Some(graph),
-        (Some(c), None) => {
-            let subs = (c.subs().iter())
-                .map(|(v, e)| Ok((*v, fix_parameters(e, &found.parameters)?)))
-                .collect::<Result<Vec<_>, EngineError>>()?;
-            Some(Condition::all(&c.to_string(), subs)?)
+    let (h, condition) = match found.basis.iter().all(|i| i.proved_fixed) {
+        false => (None, None),
+        true => {
+            let h = fix_parameters(system.hamiltonian(), &found.parameters)?;
+            let condition = match (&options.condition, graph) {
+                (_, Some(graph)) => Some(graph),
+                (Some(c), None) => {
+                    let subs = (c.subs().iter())
+                        .map(|(v, e)| Ok((*v, fix_parameters(e, &found.parameters)?)))
+                        .collect::<Result<Vec<_>, EngineError>>()?;
+                    Some(Condition::all(&c.to_string(), subs)?)
+                }
+                (None, None) => None,
+            };
+            (Some(h), condition)
         }
-        (None, None) => None,
     };
-    generated_rank_within(
-        space,
-        &functions,
-        generators,
-        Some(&h),
-        condition.as_ref(),
-        max_minors,
-    )
+    // The known integrals, where they generate every integral found.
+    let known = match &found.new {
+        Some(n) if n.new.is_empty() && found.on.is_none() => &n.known_integrals[..],
+        _ => &[],
+    };
+    let rank_by = |generators: &[Expr]| {
+        generated_rank_within(
+            space,
+            &functions,
+            generators,
+            h.as_ref(),
+            condition.as_ref(),
+            max_minors,
+        )
+    };
+    let rank = rank_by(known)?;
+    // Taken again only where that was not exact, and with other generators than the known
+    // integrals already taken: it costs a plain search nothing where the flow's bound is met.
+    let none_new = found.new.as_ref().is_some_and(|n| n.new.is_empty());
+    match BasisGenerators::of(found) {
+        Some(BasisGenerators::KnownAndNew) if none_new => Ok(rank),
+        Some(generators) if !rank.is_exact() => rank_by(&generators.functions(found)),
+        _ => Ok(rank),
+    }
+}
+
+/// What generates every integral of a search's basis, so that their rank bounds the basis's
+/// ([`basis_rank`], [`crate::UpperBound::Generated`]): each integral's gradient by the phase
+/// variables is a combination of theirs, with coefficients rational functions of the phase
+/// variables and of the parameters kept symbolic. Off a level set alone, where `--new-only`
+/// decides generation modulo its polynomial.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BasisGenerators {
+    /// `--new-only`'s known integrals and the new ones: every integral is a sum of known
+    /// integrals, constants, products of integrals of lower grade and new ones (and with
+    /// parameters kept symbolic, of parameter multiples of integrals, and quotients `K/M` of
+    /// generated ones by monomials in them), so by induction on the grade a polynomial in
+    /// the known and new ones, its coefficients rational functions of the parameters.
+    KnownAndNew,
+    /// The basis integrals that generate all of them over the polynomials in the parameters
+    /// kept symbolic ([`super::ParameterModule`]), where no declared denominator of them was
+    /// taken: each other basis integral `I_k` is `Σ_j r_kj I_j` (`r_kj` a parameter times a
+    /// number: parameter multiples of integrals of the space) plus a combination of the
+    /// generators, so `(1 − R) I = C G` with `R` vanishing where every parameter is 0:
+    /// `det(1 − R)` is a polynomial with constant term 1, not zero, and `I = (1 − R)⁻¹ C G`
+    /// over the rational functions of the parameters.
+    Module,
+}
+
+impl BasisGenerators {
+    /// What generates `found`'s basis: `--new-only`'s known and new integrals where it ran,
+    /// else the parameter module's generators where they are fewer than the basis and no
+    /// declared denominator was taken; `None` on a level set, and otherwise.
+    pub fn of(found: &SearchResult) -> Option<Self> {
+        if found.on.is_some() {
+            return None;
+        }
+        if found.new.is_some() {
+            return Some(BasisGenerators::KnownAndNew);
+        }
+        match &found.module {
+            Some(m) if m.denominators.is_empty() && m.generators.len() < found.basis.len() => {
+                Some(BasisGenerators::Module)
+            }
+            _ => None,
+        }
+    }
+
+    /// The generators, at the fixed values (as [`super::Integral::fixed`]).
+    pub fn functions(self, found: &SearchResult) -> Vec<Expr> {
+        let basis = |indices: &[usize]| -> Vec<Expr> {
+            (indices.iter())
+                .map(|&i| found.basis[i].fixed.clone())
+                .collect()
+        };
+        match (self, &found.new, &found.module) {
+            (BasisGenerators::KnownAndNew, Some(n), _) => {
+                let mut functions = n.known_integrals.clone();
+                functions.extend(basis(&n.new));
+                functions
+            }
+            (BasisGenerators::Module, _, Some(m)) => basis(&m.generators),
+            _ => Vec::new(),
+        }
+    }
 }
 
 /// The level set of a search as the graph of its [`level_set_graph_variable`] `v` over the
