@@ -284,6 +284,27 @@ const COMMANDS: &[(&str, &str)] = &[
          --fix M=1,I=1,epsilon=1 --momenta-degree 2 --positions-degree 2 --trig-degree 2",
     ),
     (
+        "gyroscopic-rotor-search",
+        "superint search systems/gyroscopic-rotor.toml --fix M=2,omega=3,I=5,kappa=7 \
+         --momenta-degree 4 --positions-degree 4 --trig-degree 4 --new-only",
+    ),
+    (
+        "gyroscopic-rotor-values-kappa",
+        "superint search systems/gyroscopic-rotor.toml --find-values kappa \
+         --fix M=1,I=1,omega=1 --momenta-degree 2 --positions-degree 2 --trig-degree 2",
+    ),
+    (
+        "gyroscopic-rotor-closure",
+        "superint closure systems/gyroscopic-rotor.toml Hosc L p_theta C1 C2 \
+         --when 'kappa = 1/2' --degree 2",
+    ),
+    (
+        "gyroscopic-rotor-resonances",
+        "superint search systems/gyroscopic-rotor.toml --find-values omega \
+         --fix M=1,I=1,kappa=1/2 --when 'p_theta = (x*p_y - y*p_x)/2 + 1' \
+         --momenta-degree 2 --positions-degree 2 --trig-degree 2",
+    ),
+    (
         "kepler",
         "superint search systems/kepler.toml --momenta-degree 2 --positions-degree 2 \
          --trig-degree 1 --laurent",
@@ -1883,6 +1904,131 @@ fn quadrupole_rotor_no_frequency_adds_an_integral_at_degree_two() {
         ],
     );
     assert!(!out.contains("but those above"), "{out}");
+}
+
+/// Section 33: the gyroscopic rotor conserves `L`, `p_θ` and the oscillator's energy for every
+/// `κ`, its quadratic tensor turns at `2κΩ` and is locked to the angle where `2nκ` is an
+/// integer; the tensor held conserved, the wrong phase, the wrong `κ` and the paper's resonance
+/// unshifted are refuted with their residuals.
+#[test]
+fn gyroscopic_rotor_conserves_l_p_theta_and_the_oscillator_energy_for_every_kappa() {
+    check_prints(
+        "systems/gyroscopic-rotor.toml",
+        &[
+            "{L, H} = 0 [conservation proved]",
+            "{p_θ, H} = 0 [conservation proved]",
+            "{H_osc, H} = 0 [conservation proved]",
+            "{K1, H} = 2κΩ K2 [turning proved]",
+            "{Q, H} = −2iκΩ Q [turning proved]",
+            "{Z, H} = i(ω − κΩ) Z [ladder proved]",
+            "{Q e^{iθ}, H} = 0 at κ = 1/2 [exact-half proved]",
+            "{Q² e^{iθ}, H} = 0 at κ = 1/4 [exact-quarter proved]",
+            "{Q³ e^{2iθ}, H} = 0 at κ = 1/3 [exact-third proved]",
+            "{Z e^{−iθ}, H} = 0 at κ = 1, p_θ = x p_y − y p_x + Iω/2 [resonant proved]",
+            "{K1, H} = 0 [false-tensor-conserved refuted, as expected]",
+            "= 2κ Ω K2",
+            "{Q e^{−iθ}, H} = 0 at κ = 1/2 [false-wrong-phase refuted, as expected]",
+            "{Q e^{iθ}, H} = 0 at κ = 1 [false-wrong-kappa refuted, as expected]",
+            "{Z e^{−iθ}, H} = 0 at κ = 1, p_θ = Iω [false-unshifted-resonance refuted, as expected]",
+            "{x p_x + y p_y, H} = 0 [false-dilation refuted, as expected] \
+             residual lhs − rhs = p_x²/M + p_y²/M − Mω²x² − Mω²y²",
+            "32 claims in 1 file: 26 proved, 6 refuted; all as expected",
+        ],
+    );
+}
+
+/// Section 33: at a generic `κ` every integral of the gyroscopic rotor of degree ≤ 4 in the
+/// momenta and the positions and of order ≤ 4 is a polynomial in `H_osc`, `L` and `p_θ`: the
+/// dimension is the number of products `H_osc^a L^b p_θ^c` of momenta degree `2a + b + c ≤ 4`.
+#[test]
+fn gyroscopic_rotor_has_only_h_osc_l_and_p_theta_to_degree_four() {
+    let degree = 4;
+    let products: usize = (0..=degree / 2)
+        .map(|a| {
+            let rest = degree - 2 * a;
+            (rest + 1) * (rest + 2) / 2
+        })
+        .sum();
+    expect(
+        "gyroscopic-rotor-search",
+        &[
+            &format!("Dimension of the space of integrals: {products}."),
+            "Known integrals in the space: H, H_osc, L, Ω.",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
+}
+
+/// Section 33: at momenta, positions and order 2 the values of `κ` with more integrals are
+/// exactly those where `Q e^{2iκθ}` lies in the space, `2κ` an integer of size ≤ 2 (`κ = 0` the
+/// harmonic rotor), each with two more integrals and functional rank 4 against 3; every other
+/// root is rational and holds nothing, so no other value has more.
+#[test]
+fn gyroscopic_rotor_exceptional_kappa_are_where_twice_kappa_is_an_integer() {
+    let out = normalize(&expect(
+        "gyroscopic-rotor-values-kappa",
+        &[
+            "For a generic κ (searched at κ = 7, no root): 7 integrals (section 2), of functional rank 3.",
+            "Every root of the determinants is rational: no other value of κ has more integrals \
+             in this space.",
+        ],
+    ));
+    let order = 2;
+    let values: Vec<String> = (-order..=order)
+        .map(|twice| match twice {
+            t if t % 2 == 0 => format!("{}", t / 2),
+            t => format!("{t}/2"),
+        })
+        .map(|v| v.replace('-', "−"))
+        .collect();
+    for value in &values {
+        assert!(
+            out.contains(&format!("at κ = {value}, 9 integrals")),
+            "no κ = {value} in:\n{out}"
+        );
+    }
+    let listed = out.matches(", 9 integrals (section").count();
+    assert_eq!(listed, values.len(), "{out}");
+    assert!(
+        !out.contains("Roots of the determinants where the search finds no more"),
+        "{out}"
+    );
+}
+
+/// Section 33: at `κ = 1/2` the parts `C1`, `C2` of `Q e^{iθ}` close with `L` in su(2), `p_θ`
+/// turns them at half `L`'s rate, and `|Q|² = 4 H_osc² − 4ω² L²` is their one relation.
+#[test]
+fn gyroscopic_rotor_closes_su2_at_half_kappa() {
+    expect(
+        "gyroscopic-rotor-closure",
+        &[
+            "{L, C1} = 2 C2 at κ = 1/2 [B1 proved]",
+            "{p_θ, C1} = C2 at κ = 1/2 [B3 proved]",
+            "{C1, C2} = 8ω² L at κ = 1/2 [B5 proved]",
+            "4ω² L² + C1² + C2² = 4 H_osc² at κ = 1/2 [R1 proved]",
+        ],
+    );
+}
+
+/// Section 33: on the level set `Ω = 1` at `κ = 1/2` the circular modes turn at `ω ∓ 1/2`
+/// against the rotor's 1, and the resonant `ω` are the harmonic rotor's shifted by `±κΩ`:
+/// `±1/2, ±1, ±3/2, ±5/2` at degree 2, each of rank 4 on the 5 dimensions (maximal).
+#[test]
+fn gyroscopic_rotor_resonances_shift_with_kappa() {
+    let out = normalize(&expect(
+        "gyroscopic-rotor-resonances",
+        &[
+            "For a generic ω (searched at ω = 7, no root): 6 integrals (section 2), of functional rank 3.",
+            "Roots of the determinants where the search finds no more integrals: ω = 0.",
+        ],
+    ));
+    for value in ["−5/2", "−3/2", "−1", "−1/2", "1/2", "1", "3/2", "5/2"] {
+        assert!(
+            out.contains(&format!("at ω = {value}, ")),
+            "no ω = {value} in:\n{out}"
+        );
+    }
+    assert_eq!(out.matches("of functional rank 4").count(), 8, "{out}");
 }
 
 /// The file's integrals hold at their cases and at no neighbour: each claim proved, each
