@@ -9,6 +9,7 @@ use superint::system_file::{load_str, LimitsOverride, LoadedSystem};
 
 use crate::{
     holds, scratch_text, superint, superint_in, superint_json, superint_ok, superint_refused,
+    DEGREE_ONE_TRIG_ZERO,
 };
 
 const TWO_BODY: &str = "name = \"Calogero two-body\"\n\
@@ -826,4 +827,89 @@ fn denominators_search_at_values_where_one_vanishes_refuses_a_hamiltonian_that_d
         "{err}"
     );
     assert!(search(system, &at(1, 2)).is_ok());
+}
+
+/// The gyroscopic rotor with `1 + κ` declared: the paper's resonance shifted for every `κ`,
+/// `p_θ = κL + Iω/(1 + κ)`, is proved and the unshifted one refuted, and the claims that fix
+/// `κ` take the denominator at its value (`κ = 1/2`: `3/2`) instead of being refused.
+const GYROSCOPIC_WITH_ONE_PLUS_KAPPA: &str = "name = \"gyroscopic rotor\"\n\
+    hamiltonian = \"(p_x^2 + p_y^2)/(2*M) + M*omega^2*(x^2 + y^2)/2 \
+    + (p_theta - kappa*(x*p_y - y*p_x))^2/(2*I)\"\n\
+    [phase_space]\n\
+    coordinates = [\"x\", \"y\"]\n\
+    angles = [\"theta\"]\n\
+    parameters = [\"M\", \"omega\", \"I\", \"kappa\"]\n\
+    denominators = [\"kappa + 1\"]\n\
+    [[function]]\nname = \"Z\"\nvalue = \"p_x + i*p_y + i*M*omega*(x + i*y)\"\n\
+    [[function]]\nname = \"Q\"\nvalue = \"(p_x + i*p_y)^2/M + M*omega^2*(x + i*y)^2\"\n\
+    [[claim]]\nid = \"resonant\"\nclaim = \"{Z*exp(-i*theta), H} = 0\"\n\
+    when = \"p_theta = kappa*(x*p_y - y*p_x) + I*omega/(1 + kappa)\"\n\
+    [[claim]]\nid = \"false-unshifted\"\nclaim = \"{Z*exp(-i*theta), H} = 0\"\n\
+    when = \"p_theta = kappa*(x*p_y - y*p_x) + I*omega\"\nexpect = \"refuted\"\n\
+    [[claim]]\nid = \"exact-half\"\nclaim = \"{Q*exp(i*theta), H} = 0\"\n\
+    when = \"kappa = 1/2\"\n\
+    [[claim]]\nid = \"at-half\"\nclaim = \"(2 + kappa)/(1 + kappa) = 5/3\"\n\
+    when = \"kappa = 1/2\"\n\
+    [[claim]]\nid = \"false-at-half\"\nclaim = \"1/(1 + kappa) = 1/2\"\n\
+    when = \"kappa = 1/2\"\nexpect = \"refuted\"\n";
+
+#[test]
+fn denominators_shifted_resonance_divides_by_one_plus_kappa_for_every_kappa() {
+    let f = scratch_text(
+        "denominators-gyroscopic",
+        "gyroscopic.toml",
+        GYROSCOPIC_WITH_ONE_PLUS_KAPPA,
+    );
+    let out = superint_ok(&["check", f.to_str().unwrap()]);
+    for line in [
+        "{Z e^{−iθ}, H} = 0 at p_θ = κ(x p_y − y p_x) + Iω/(1 + κ)",
+        "[resonant proved]",
+        "[false-unshifted refuted, as expected]",
+        "[exact-half proved]",
+        "(2 + κ)/(1 + κ) = 5/3 at κ = 1/2",
+        "[false-at-half refuted, as expected]",
+        "5 claims in 1 file: 3 proved, 2 refuted; all as expected",
+    ] {
+        assert!(out.contains(line), "no {line:?} in:\n{out}");
+    }
+}
+
+/// A condition where a declared denominator in parameters alone is 0 is refused at the value,
+/// naming the denominator and the condition; one that sets a denominator's coordinate stays
+/// refused, as does a search under a condition on a denominator's parameter.
+#[test]
+fn denominators_a_condition_where_one_plus_kappa_is_zero_is_refused() {
+    let at_minus_one = GYROSCOPIC_WITH_ONE_PLUS_KAPPA.replace("kappa = 1/2", "kappa = -1");
+    let f = scratch_text("denominators-gyroscopic", "pole.toml", &at_minus_one);
+    let err = superint_refused(&["check", f.to_str().unwrap()]);
+    assert!(
+        err.contains(
+            "pole.toml:26:17: at κ = −1 the denominator κ + 1 is 0, so what divides by it has \
+             no value there: give κ a value where κ + 1 is not 0, or leave it free"
+        ),
+        "{err}"
+    );
+    let f = scratch_text(
+        "denominators-gyroscopic",
+        "gyroscopic.toml",
+        GYROSCOPIC_WITH_ONE_PLUS_KAPPA,
+    );
+    let f = f.to_str().unwrap();
+    let err = superint_refused(&["bracket", f, "Z", "H", "--when", "kappa = -1"]);
+    assert!(
+        err.contains("at κ = −1 the denominator κ + 1 is 0"),
+        "{err}"
+    );
+    let out = superint_ok(&["bracket", f, "1/(1 + kappa)", "H", "--when", "kappa = 1/2"]);
+    assert!(out.contains("= 0"), "{out}");
+    let search = [
+        &["search", f, "--when", "kappa = 1/2"][..],
+        &DEGREE_ONE_TRIG_ZERO,
+    ]
+    .concat();
+    let err = superint_refused(&search);
+    assert!(
+        err.contains("the condition sets κ, which the denominator (κ + 1) involves"),
+        "{err}"
+    );
 }

@@ -22,6 +22,10 @@ pub struct Condition {
     pub text: String,
     /// The substitution, resolved.
     subs: Vec<(Var, Expr)>,
+    /// The declared denominators the condition gives a value: each atom whose polynomial, in
+    /// parameters alone, holds a parameter the condition sets, with the atom's value there
+    /// (`1/(κ + 1)` is `2/3` at `κ = 1/2`), which [`Condition::apply`] substitutes with the rest.
+    denominators: Vec<(Var, Expr)>,
 }
 
 /// Why setting `v` to `value` is impossible when `v` is an angle: functions depend on it
@@ -155,9 +159,14 @@ impl Condition {
             "a condition sets a real variable to a value that is not real ({text}); \
              Condition::all refuses it with an error"
         );
+        let subs = vec![(v, value)];
+        // A value that leaves a denominator without one is refused where the condition is
+        // applied ([`Condition::apply`]).
+        let denominators = denominator_values(text, &subs).unwrap_or_default();
         Condition {
             text: text.to_string(),
-            subs: vec![(v, value)],
+            subs,
+            denominators,
         }
     }
 
@@ -167,8 +176,9 @@ impl Condition {
     /// itself, directly (`x = 2x`) or through the others (`x = y, y = x`), is refused: such a
     /// condition is an equation, not a substitution. So is a value that is not real (for an
     /// angle, one off the unit circle), a radical or a denominator set as if it were a
-    /// variable, and a variable that a denominator or a radicand involves
-    /// ([`Condition::keeps_denominators`]). Every refusal is an
+    /// variable, a variable that a radicand or a denominator holding a phase variable involves
+    /// ([`Condition::keeps_denominators`]), and a value where a denominator in parameters
+    /// alone is zero (`κ = −1` of `1/(κ + 1)`). Every refusal is an
     /// [`EngineError::RefusedCondition`] naming the variable, but that of values in different
     /// variable sets, or of a variable that is not a handle of theirs, which is
     /// [`AlgebraError::VarSetMismatch`]; so is the use of a condition with functions of another
@@ -220,11 +230,18 @@ impl Condition {
                 format!("the condition sets {name} twice"),
             ));
         }
+        if let Some((v, why)) = subs.iter().find_map(|(v, value)| {
+            let atoms = Expr::denominator_atoms(value.vars()).ok()?;
+            Condition::sets_a_denominator(&atoms, *v).map(|why| (*v, why))
+        }) {
+            return Err(refused(v, why));
+        }
         Condition {
             text: text.to_string(),
             subs: subs.clone(),
+            denominators: Vec::new(),
         }
-        .keeps_denominators()?;
+        .keeps_radicands()?;
         let sets = |e: &Expr, subs: &[(Var, Expr)]| subs.iter().any(|(v, _)| e.contains(*v));
         let written = subs.clone();
         // A chain of k substitutions resolves in k rounds; what is left after as many rounds
@@ -237,9 +254,11 @@ impl Condition {
                 return Err(refusal);
             }
             if !subs.iter().any(|(_, e)| sets(e, &subs)) {
+                let denominators = denominator_values(text, &subs)?;
                 return Ok(Condition {
                     text: text.to_string(),
                     subs,
+                    denominators,
                 });
             }
             subs = subs
@@ -361,38 +380,71 @@ impl Condition {
         Ok(set)
     }
 
-    /// Applies the substitution.
+    /// Applies the substitution, and the values it gives the declared denominators whose
+    /// polynomial, in parameters alone, holds a parameter it sets (`1/(κ + 1)` is `2/3` at
+    /// `κ = 1/2`).
     pub fn apply(&self, e: &Expr) -> Result<Expr, EngineError> {
         self.within(e.vars())?;
-        self.keeps_denominators()?;
-        Ok(e.subst_many(&self.subs)?)
+        self.keeps_radicands()?;
+        if self.denominators.is_empty() {
+            // Refused where a denominator it sets has no value (a `Condition::new`'s).
+            denominator_values(&self.text, &self.subs)?;
+            return Ok(e.subst_many(&self.subs)?);
+        }
+        let with_denominators: Vec<(Var, Expr)> = self
+            .subs
+            .iter()
+            .chain(&self.denominators)
+            .cloned()
+            .collect();
+        Ok(e.subst_many(&with_denominators)?)
+    }
+
+    /// Whether the condition gives a declared denominator a value: it sets a parameter that
+    /// the denominator's polynomial holds (`κ = 1/2` of `1/(κ + 1)`).
+    pub fn sets_denominators(&self) -> bool {
+        !self.denominators.is_empty()
     }
 
     /// Refuses a condition that sets a variable a denominator atom's polynomial or a radicand
-    /// involves: the atom `1/(x − y)` would keep standing for `1/(x − y)`, not its value at
-    /// the condition (which may be `1/0`), and the radical `r = √(x² + y² + z²)` would keep
-    /// `r² = x² + y² + z²` at `z = 0`.
+    /// involves, for a use that substitutes [`Condition::subs`] alone (a search):
+    /// there the atom `1/(κ + 1)` would keep standing for `1/(κ + 1)`, not its value at the
+    /// condition, and the radical `r = √(x² + y² + z²)` would keep `r² = x² + y² + z²` at
+    /// `z = 0`. [`Condition::apply`] (a claim's, a closure's) substitutes the denominators' values too.
     pub fn keeps_denominators(&self) -> Result<(), EngineError> {
+        self.keeps_radicands()?;
         let Some((_, first)) = self.subs.first() else {
             return Ok(());
         };
         let atoms = Expr::denominator_atoms(first.vars())?;
+        let refusal = atoms.iter().find_map(|(atom, d)| {
+            let (v, _) = self.subs.iter().find(|(v, _)| d.contains(*v))?;
+            let vars = d.vars();
+            Some(refused(
+                *v,
+                format!(
+                    "the condition sets {}, which the denominator {} involves: a search or a                      closure under a condition on a denominator's variables is not supported                      (a claim's condition is)",
+                    vars.variable(*v).unicode(),
+                    vars.variable(*atom).unicode()
+                ),
+            ))
+        });
+        refusal.map_or(Ok(()), Err)
+    }
+
+    /// Refuses a condition that sets a variable a radicand involves (see
+    /// [`Condition::keeps_denominators`]).
+    fn keeps_radicands(&self) -> Result<(), EngineError> {
+        let Some((_, first)) = self.subs.first() else {
+            return Ok(());
+        };
         let radicals = Expr::radicals(first.vars())?;
-        // The first atom (then radical) that a variable set involves, and the first such
-        // variable.
-        let refusal = (0..atoms.len())
-            .find_map(|k| {
-                self.subs.iter().find_map(|(v, _)| {
-                    Condition::sets_a_denominator(&atoms[k..=k], *v).map(|why| (*v, why))
-                })
+        // The first radical that a variable set involves, and the first such variable.
+        let refusal = (0..radicals.len()).find_map(|k| {
+            self.subs.iter().find_map(|(v, _)| {
+                Condition::sets_a_radicand(&radicals[k..=k], *v).map(|why| (*v, why))
             })
-            .or_else(|| {
-                (0..radicals.len()).find_map(|k| {
-                    self.subs.iter().find_map(|(v, _)| {
-                        Condition::sets_a_radicand(&radicals[k..=k], *v).map(|why| (*v, why))
-                    })
-                })
-            });
+        });
         match refusal {
             Some((v, why)) => Err(refused(v, why)),
             None => Ok(()),
@@ -400,21 +452,31 @@ impl Condition {
     }
 
     /// Why a condition may not set `v` in `space`, if it may not: a denominator's polynomial
-    /// ([`Condition::sets_a_denominator`]) or a radicand ([`Condition::sets_a_radicand`])
-    /// involves it.
+    /// that holds a phase variable ([`Condition::sets_a_denominator`]) or a radicand
+    /// ([`Condition::sets_a_radicand`]) involves it.
     pub fn cannot_set(space: &PhaseSpace, v: Var) -> Option<String> {
         Condition::sets_a_denominator(space.denominator_atoms(), v)
             .or_else(|| Condition::sets_a_radicand(space.radicals(), v))
     }
 
     /// Why a condition may not set `v`, if it may not: the polynomial of one of the
-    /// denominator `atoms` involves it (see [`Condition::keeps_denominators`]).
+    /// denominator `atoms` involves it and a coordinate, momentum or angle besides, so that the
+    /// condition would set a function of phase space in it (`x` in `x − y`), which the atom
+    /// would go on standing for. A polynomial in parameters alone takes its value at the
+    /// condition ([`Condition::apply`]).
     pub fn sets_a_denominator(atoms: &[(Var, Expr)], v: Var) -> Option<String> {
-        let (atom, d) = atoms.iter().find(|(_, d)| d.contains(v))?;
+        let (atom, d) = atoms.iter().find(|(_, d)| {
+            let vars = d.vars();
+            d.contains(v)
+                && vars
+                    .vars()
+                    .any(|w| vars.variable(w).kind() != VarKind::Parameter && d.contains(w))
+        })?;
         let vars = d.vars();
         Some(format!(
             "the condition sets {}, which the denominator {} involves: a condition on a \
-             denominator's variables is not supported",
+             denominator's variables is not supported where the denominator holds a \
+             coordinate, a momentum or an angle (one in parameters alone takes its value there)",
             vars.variable(v).unicode(),
             vars.variable(*atom).unicode()
         ))
@@ -572,6 +634,63 @@ impl Condition {
             false => Err(AlgebraError::VarSetMismatch.into()),
         }
     }
+}
+
+/// The values a condition's resolved `subs` (read as `text`) give the declared denominators
+/// whose polynomial `D` holds a variable it sets: the atom, which stands for `D`, takes `D`'s
+/// value at the condition, a nonzero number or a polynomial that division by the declared
+/// denominators reaches (`(κ + 1)` is `3/2` at `κ = 1/2`, so `1/(κ + 1)` is `2/3`). Refused ([`EngineError::RefusedCondition`], naming the variable
+/// set) where `D` holds a phase variable ([`Condition::sets_a_denominator`]), where it is zero
+/// at the condition (what divides by it has no value there) and where division does not reach
+/// it.
+fn denominator_values(text: &str, subs: &[(Var, Expr)]) -> Result<Vec<(Var, Expr)>, EngineError> {
+    let Some((_, first)) = subs.first() else {
+        return Ok(Vec::new());
+    };
+    let vars = first.vars();
+    let atoms = Expr::denominator_atoms(vars)?;
+    let set: Vec<(Var, &Expr, Var)> = atoms
+        .iter()
+        .filter_map(|(atom, d)| Some((*atom, d, subs.iter().find(|(v, _)| d.contains(*v))?.0)))
+        .collect();
+    let mut values = Vec::new();
+    for &(atom, d, v) in &set {
+        if let Some(why) = Condition::sets_a_denominator(&atoms, v) {
+            return Err(refused(v, why));
+        }
+        let name = vars.variable(v).unicode();
+        let at = d.subst_many(subs)?;
+        if at.vanishes()? {
+            return Err(refused(
+                v,
+                format!(
+                    "at {text} the denominator {d} is 0, so what divides by it has no value \
+                     there: give {name} a value where {d} is not 0, or leave it free"
+                ),
+            ));
+        }
+        // The atom stands for `D`, its negative powers for `1/D^k`: it takes `D`'s value,
+        // whose inverse division must reach.
+        match Expr::one(vars).checked_div(&at) {
+            Ok(_) if !set.iter().any(|s| at.contains(s.0)) => values.push((atom, at)),
+            Ok(_) => {
+                return Err(refused(
+                    v,
+                    format!(
+                        "at {text} the denominator {d} is {at}, which holds a denominator the \
+                         condition also sets: give {name} a value free of it"
+                    ),
+                ))
+            }
+            Err(e) => {
+                return Err(refused(
+                    v,
+                    format!("at {text} the denominator {d} is {at}, and {e}"),
+                ))
+            }
+        }
+    }
+    Ok(values)
 }
 
 /// The error for a condition that sets `v` in terms of itself.

@@ -359,10 +359,14 @@ impl System {
     /// where the condition's values are single terms, so that the flow off the condition is
     /// never built. The same value as [`Condition::apply`] on [`System::flow`].
     pub fn flow_when(&self, f: &Expr, condition: &Condition) -> Result<Expr, EngineError> {
-        condition.keeps_denominators()?;
         match &self.dh {
-            Some(dh) => self.space.bracket_with_gradient_at(f, dh, condition.subs()),
-            None => condition.apply(&self.flow(f)?),
+            // The fast path substitutes the condition's own variables alone, not the values
+            // it gives the denominators.
+            Some(dh) if !condition.sets_denominators() => {
+                condition.keeps_denominators()?;
+                self.space.bracket_with_gradient_at(f, dh, condition.subs())
+            }
+            _ => condition.apply(&self.flow(f)?),
         }
     }
 }

@@ -303,6 +303,8 @@ fn fixed_search_problem(
         level.check(system, &options.fixed)?;
     }
     if let Some(c) = condition {
+        // The search substitutes the condition's own variables alone.
+        c.keeps_denominators()?;
         c.kept_by_flow(system)?;
         c.defined_on(&[system.hamiltonian()], "the Hamiltonian")?;
     }
