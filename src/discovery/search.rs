@@ -6,9 +6,8 @@ use crate::render::Format;
 use std::time::Instant;
 
 use brackets::search::{
-    basis_rank, fix_parameters, level_set_graph_variable, search, BasisGenerators, Integral,
-    NewIntegrals, SearchOptions, SearchResult, SearchSpace, SearchedLevel, MAX_RANK_MINORS,
-    SEARCH_RANK_MINORS,
+    basis_rank, fix_parameters, level_set_graph_variable, search, Integral, NewIntegrals,
+    SearchOptions, SearchResult, SearchSpace, SearchedLevel, MAX_RANK_MINORS, SEARCH_RANK_MINORS,
 };
 use brackets::{BoundedRank, EngineError, PhaseSpace, System, UpperBound};
 use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, Vars};
@@ -545,43 +544,51 @@ fn functional_rank_text(
 }
 
 /// Why the rank is at most `k` where what generates every integral has that rank
-/// ([`BasisGenerators`]): ` (the known integrals `H` and `L` generate every integral, and their
-/// rank is 2)`, with the new ones where there are some, or ` (the generators over the
-/// polynomials in `A, B, C`, `I1` and `I11`, have rank 1)`.
+/// ([`brackets::search::BasisGenerators`]): ` (the known integrals `H` and `L` generate every
+/// integral, and their rank is 2)`, with the new ones where there are some, or ` (every
+/// integral is a combination of `I1` and `I11` with coefficients rational in `A, B, C`, and
+/// their rank is 1)` (rational: `(1 − R)⁻¹ C`, as `BasisGenerators::Module` says).
 fn generated_text(r: &SearchResult, shared: &Shared, k: usize) -> String {
     let labels = |indices: &[usize]| -> Vec<String> {
         (indices.iter())
             .map(|&i| format!("`{}`", shared.label(i)))
             .collect()
     };
-    match (BasisGenerators::of(r), &r.new, &r.module, &shared.symbolic) {
-        (Some(BasisGenerators::Module), _, Some(m), Some(names)) => format!(
-            " (the generators over the polynomials in `{names}`, {}, have rank {k})",
-            listed(&labels(&m.generators))
-        ),
-        (_, Some(n), _, _) => {
-            let known = (n.known.iter())
-                .map(|name| format!("`{name}`"))
-                .collect::<Vec<_>>();
-            let new = labels(&n.new);
-            let (generate, their) = match known.len() + new.len() {
-                1 => ("generates", "its"),
-                _ => ("generate", "their"),
-            };
-            let named = |what: &str, names: &[String]| match names.len() {
+    let (their, what) = match (&r.new, &r.module, &shared.symbolic) {
+        (Some(n), _, _) => {
+            let known = (n.known.iter()).map(|name| format!("`{name}`"));
+            let named = |what: &str, names: Vec<String>| match names.len() {
                 0 => None,
-                1 => Some(format!("the {what} integral {}", listed(names))),
-                _ => Some(format!("the {what} integrals {}", listed(names))),
+                1 => Some(format!("the {what} integral {}", listed(&names))),
+                _ => Some(format!("the {what} integrals {}", listed(&names))),
             };
-            let both = [named("known", &known), named("new", &new)]
-                .into_iter()
-                .flatten()
-                .collect::<Vec<_>>()
-                .join(" and ");
-            format!(" ({both} {generate} every integral, and {their} rank is {k})")
+            let both = [
+                named("known", known.collect()),
+                named("new", labels(&n.new)),
+            ]
+            .into_iter()
+            .flatten()
+            .collect::<Vec<_>>()
+            .join(" and ");
+            match n.known.len() + n.new.len() {
+                1 => ("its", format!("{both} generates every integral")),
+                _ => ("their", format!("{both} generate every integral")),
+            }
         }
-        _ => String::new(),
-    }
+        (None, Some(m), Some(names)) => (
+            if m.generators.len() == 1 {
+                "its"
+            } else {
+                "their"
+            },
+            format!(
+                "every integral is a combination of {} with coefficients rational in `{names}`",
+                listed(&labels(&m.generators))
+            ),
+        ),
+        _ => return String::new(),
+    };
+    format!(" ({what}, and {their} rank is {k})")
 }
 
 /// ` By degree in the momenta: ≤ 0: 1, ≤ 1: 6.`, `dims[j]` integrals of degree `≤ j` (`what`:

@@ -7975,8 +7975,8 @@ fn generators_of_every_integral_bound_the_rank_by_theirs() {
     let text = normalize(&superint_ok(&args));
     assert!(
         text.contains(
-            "≤ 2: 14. Functional rank: 1 (the generators over the polynomials in A, B, C, I1 \
-             and I11, have rank 1)."
+            "≤ 2: 14. Functional rank: 1 (every integral is a combination of I1 and I11 with \
+             coefficients rational in A, B, C, and their rank is 1)."
         ),
         "{text}"
     );

@@ -261,11 +261,11 @@ pub const SEARCH_RANK_MINORS: usize = 16;
 /// level set of a condition that sets phase variables, `H` at the parameters it sets:
 /// [`crate::integrals_rank_within`]); else the
 /// bordering minors, at most `max_minors` of them ([`SEARCH_RANK_MINORS`] in a plain search),
-/// else `at least` the lower bound. Where `--new-only` found that the known integrals generate
-/// every integral (none is new), each is a polynomial in them, and their rank, taken the same
-/// way, bounds the basis's ([`generated_rank_within`]); not on a level set, where they
-/// generate it modulo its polynomial alone. Where the rank is still not exact, it is taken
-/// again bounded by the rank of what [`BasisGenerators`] says generates the basis.
+/// else `at least` the lower bound. Where that is not exact, it is taken again bounded by the
+/// rank of what [`BasisGenerators`] says generates the basis, taken the same way
+/// ([`generated_rank_within`]): `--new-only`'s known and new integrals, or the generators
+/// over the parameters kept symbolic; not on a level set, where the known integrals generate
+/// modulo its polynomial alone.
 /// Parameters kept symbolic are variables of the exact points like the phase variables:
 /// every integral is one for every value of them (where the condition holds), so the flow's
 /// bound holds at a generic value, and the rank is that over the functions of both.
@@ -300,11 +300,6 @@ pub fn basis_rank(
             (Some(h), condition)
         }
     };
-    // The known integrals, where they generate every integral found.
-    let known = match &found.new {
-        Some(n) if n.new.is_empty() && found.on.is_none() => &n.known_integrals[..],
-        _ => &[],
-    };
     let rank_by = |generators: &[Expr]| {
         generated_rank_within(
             space,
@@ -315,12 +310,10 @@ pub fn basis_rank(
             max_minors,
         )
     };
-    let rank = rank_by(known)?;
-    // Taken again only where that was not exact, and with other generators than the known
-    // integrals already taken: it costs a plain search nothing where the flow's bound is met.
-    let none_new = found.new.as_ref().is_some_and(|n| n.new.is_empty());
+    // Bounded by what generates every integral only where the rank is not otherwise exact:
+    // it costs nothing where the flow's bound is met.
+    let rank = rank_by(&[])?;
     match BasisGenerators::of(found) {
-        Some(BasisGenerators::KnownAndNew) if none_new => Ok(rank),
         Some(generators) if !rank.is_exact() => rank_by(&generators.functions(found)),
         _ => Ok(rank),
     }
