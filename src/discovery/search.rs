@@ -6,8 +6,9 @@ use crate::render::Format;
 use std::time::Instant;
 
 use brackets::search::{
-    basis_rank, fix_parameters, level_set_graph_variable, search, Integral, NewIntegrals,
-    SearchOptions, SearchResult, SearchSpace, SearchedLevel, MAX_RANK_MINORS, SEARCH_RANK_MINORS,
+    basis_rank, fix_parameters, generation_decided, level_set_graph_variable, search, Integral,
+    NewIntegrals, SearchOptions, SearchResult, SearchSpace, SearchedLevel, MAX_RANK_MINORS,
+    SEARCH_RANK_MINORS,
 };
 use brackets::{BoundedRank, EngineError, PhaseSpace, System, UpperBound};
 use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, Vars};
@@ -1191,12 +1192,20 @@ impl Shared {
         entries.extend(self.symbolic_note());
         // The rank of the basis found; a search whose rank cannot be certified (a denominator
         // vanishing at every sample point) is shown without it.
-        let rank = (!r.basis.is_empty())
-            .then(|| basis_rank(system, options, r, self.rank_minors()).ok())
-            .flatten();
+        let rank_of = |r: &SearchResult| basis_rank(system, options, r, self.rank_minors()).ok();
+        let mut rank = (!r.basis.is_empty()).then(|| rank_of(r)).flatten();
+        // Where it is not exact, the known integrals' generation decided bounds it (the search
+        // reports the basis as it was, without the new integrals' section).
+        let decided = (rank.as_ref())
+            .filter(|rank| !rank.is_exact())
+            .and_then(|_| generation_decided(system, options, r));
+        if let Some(better) = decided.as_ref().and_then(rank_of) {
+            rank = Some(better);
+        }
+        let ranked = decided.as_ref().unwrap_or(r);
         let rank_text = rank
             .as_ref()
-            .map(|rank| functional_rank_text(rank, system.space(), r, self))
+            .map(|rank| functional_rank_text(rank, system.space(), ranked, self))
             .unwrap_or_default();
         entries.extend(self.dimensions(r, vars, &rank_text));
         entries.extend(positions_degree_hint(system, options, r, self.caller));

@@ -7833,7 +7833,8 @@ fn dipole_rotor_search_has_rank_two_below_its_dimension() {
 /// polynomial in them and the basis's rank is at most theirs: the dipole rotor's 9 integrals
 /// at momenta, positions and order 4 have rank 2 exactly, that of `H` and `J` (the 9 × 6
 /// Jacobian has 28 bordering minors, past a plain search's 16, so without `--new-only` the
-/// same search says `at least 2`). Where some integral is new the bound does not apply: the
+/// same search decides the generation for the rank, saying so, without the new integrals'
+/// section; it said `at least 2` before). Where some integral is new the bound does not apply: the
 /// harmonic rotor at `p_θ = Iω` keeps the flow's bound; and where the flow's bound is the
 /// same, as the 3D Kepler problem's rank 5, it is the flow's.
 #[test]
@@ -7861,15 +7862,19 @@ fn known_integrals_that_generate_every_integral_bound_the_rank() {
     assert_eq!(json["searches"][0]["functional_rank_bound"], "generated");
     let text = normalize(&superint_ok(&plain));
     assert!(
-        text.contains("≤ 4: 9. Functional rank: at least 2."),
+        text.contains(
+            "≤ 4: 9. Functional rank: 2 (the known integrals H and J generate every integral, \
+             and their rank is 2)."
+        ),
+        "{text}"
+    );
+    assert!(
+        !text.contains("the known integrals generate every integral in"),
         "{text}"
     );
     let json = superint_json(&plain);
-    assert_eq!(json["searches"][0]["functional_rank_exact"], false);
-    assert_eq!(
-        json["searches"][0]["functional_rank_bound"],
-        serde_json::Value::Null
-    );
+    assert_eq!(json["searches"][0]["functional_rank_exact"], true);
+    assert_eq!(json["searches"][0]["functional_rank_bound"], "generated");
     let text = normalize(&superint_ok_line(
         "search systems/harmonic-rotor.toml --when 'p_theta = I*omega' --new-only --no-timings",
     ));
@@ -7947,10 +7952,12 @@ fn a_condition_setting_parameters_keeps_the_flows_bound_on_the_rank() {
 /// integrals (the Fock–Darwin rotor at `p_θ = Iω₊`, its integrals functions of `L`, `W
 /// e^{−iθ}` and its conjugate, rank 3 below the flow's 4), and with parameters kept symbolic
 /// the generators over the polynomials in them (Hénon–Heiles with `A, B, C` symbolic: 14
-/// integrals, all parameter multiples of `1` and `H`, rank 1). A plain search of fixed values
-/// knows no generation, and stays `at least` where the bordering minors are too many
-/// (`known_integrals_that_generate_every_integral_bound_the_rank`: the dipole rotor says
-/// `at least 2` without `--new-only`).
+/// integrals, all parameter multiples of `1` and `H`, rank 1). A plain search decides the
+/// known integrals' generation where its rank is not otherwise exact
+/// (`known_integrals_that_generate_every_integral_bound_the_rank`); a rank stays `at least`
+/// on a level set that is not a graph (no flow, no generation) past the bordering minors a
+/// plain search expands, and where the generators' own rank is not exact: no documented
+/// search is either.
 #[test]
 fn generators_of_every_integral_bound_the_rank_by_theirs() {
     let rotor = "search systems/fock-darwin-rotor.toml --when p_theta=I*a --momenta-degree 1 \

@@ -263,8 +263,8 @@ pub const SEARCH_RANK_MINORS: usize = 16;
 /// bordering minors, at most `max_minors` of them ([`SEARCH_RANK_MINORS`] in a plain search),
 /// else `at least` the lower bound. Where that is not exact, it is taken again bounded by the
 /// rank of what [`BasisGenerators`] says generates the basis, taken the same way
-/// ([`generated_rank_within`]): `--new-only`'s known and new integrals, or the generators
-/// over the parameters kept symbolic; not on a level set, where the known integrals generate
+/// ([`generated_rank_within`]): `--new-only`'s known and new integrals (a plain search's
+/// decided by [`generation_decided`]), or the generators over the parameters kept symbolic; not on a level set, where the known integrals generate
 /// modulo its polynomial alone.
 /// Parameters kept symbolic are variables of the exact points like the phase variables:
 /// every integral is one for every value of them (where the condition holds), so the flow's
@@ -317,6 +317,29 @@ pub fn basis_rank(
         Some(generators) if !rank.is_exact() => rank_by(&generators.functions(found)),
         _ => Ok(rank),
     }
+}
+
+/// `found` with which of its integrals are new decided ([`SearchResult::new`]: the search
+/// again with `new_only`, as `--new-only` runs it), for [`basis_rank`] to bound the rank by
+/// the known and new integrals ([`BasisGenerators::KnownAndNew`]) where it is not otherwise
+/// exact. `None` where it was decided already, on a level set (where the known integrals
+/// generate modulo its polynomial alone), or where the search again stops at a limit or
+/// finds another basis.
+pub fn generation_decided(
+    system: &System,
+    options: &SearchOptions,
+    found: &SearchResult,
+) -> Option<SearchResult> {
+    if found.new.is_some() || found.on.is_some() {
+        return None;
+    }
+    let again = SearchOptions {
+        new_only: true,
+        ..options.clone()
+    };
+    let decided = super::search(system, &again).ok()?;
+    let fixed = |r: &SearchResult| r.basis.iter().map(|i| i.fixed.clone()).collect::<Vec<_>>();
+    (fixed(&decided) == fixed(found)).then_some(decided)
 }
 
 /// What generates every integral of a search's basis, so that their rank bounds the basis's
