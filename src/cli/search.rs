@@ -7,8 +7,8 @@ use std::path::{Path, PathBuf};
 use super::input::load_system;
 use anyhow::{anyhow, bail, Context};
 use brackets::search::{
-    BesideLevelSet, SearchOptions, SearchResult, SearchSpace, DEFAULT_MAX_MINOR,
-    DEFAULT_MAX_PRODUCTS,
+    BesideLevelSet, SearchOptions, SearchSpace, DEFAULT_MAX_MINOR, DEFAULT_MAX_PRODUCTS,
+    MAX_RANK_MINORS,
 };
 use brackets::{EngineError, System};
 use clap::Args;
@@ -877,10 +877,9 @@ fn find_values(
     };
     // Each candidate searched once, as its report shows it: under `--when 'C = VALUE'` (with
     // `a`'s own after), or on a level set, which takes no condition, with C fixed there, as
-    // `--fix` does. The engine keeps those with more integrals; their options are kept here
-    // for their reports.
-    let mut searched: Vec<(trigpoly::Rational, SearchOptions)> = Vec::new();
-    let found = candidates.confirm(system.space(), |value| -> anyhow::Result<SearchResult> {
+    // `--fix` does. The engine keeps those with more integrals, and takes their ranks once,
+    // which their reports show.
+    let at = |value: &trigpoly::Rational| -> anyhow::Result<SearchOptions> {
         let mut at = options.clone();
         match &options.on {
             Some(_) => at.fixed.push((parameter, value.clone())),
@@ -892,26 +891,32 @@ fn find_values(
                 at.condition = subject.condition(Some(&when))?;
             }
         }
-        let r = brackets::search::search(system, &at).map_err(refused)?;
-        searched.push((value.clone(), at));
-        Ok(r)
-    })?;
-    let shown = std::iter::once((&found.determinants.generic_value, &found.generic))
-        .chain(found.values.iter().map(|v| (&v.value, &v.found)));
+        Ok(at)
+    };
+    let found = candidates.confirm(
+        |value| -> anyhow::Result<_> {
+            brackets::search::search(system, &at(value)?).map_err(refused)
+        },
+        |value, r| -> anyhow::Result<_> {
+            brackets::search::basis_rank(system, &at(value)?, r, MAX_RANK_MINORS).map_err(refused)
+        },
+    )?;
+    let shown = std::iter::once((
+        &found.determinants.generic_value,
+        &found.generic,
+        &found.generic_rank,
+    ))
+    .chain(found.values.iter().map(|v| (&v.value, &v.found, &v.rank)));
     let mut searches = Vec::new();
-    for (value, r) in shown {
-        let at = (searched.iter())
-            .find(|(v, _)| v == value)
-            .map(|(_, at)| at)
-            .expect("each value confirmed was searched");
+    for (value, r, rank) in shown {
         let report = command_line_report_of(
             file,
             &subject.the_name(),
             system,
-            at,
+            &at(value)?,
             format,
             r,
-            Some(parameter),
+            Some((parameter, rank)),
         )
         .map_err(refused)?;
         searches.push(report);

@@ -94,12 +94,21 @@ pub fn exceptional_values_report(
             section_of(k)
         )
     };
+    // Where the level set is no graph, the rank is said where it is taken, as each section
+    // says it.
+    let rank_said = |r: &brackets::search::SearchResult, rank: &BoundedRank| {
+        let whole = r.on.is_some() && level_set_graph_variable(system.space(), r).is_none();
+        match whole {
+            true => format!("{rank} in the whole phase space, not on the level set"),
+            false => rank.to_string(),
+        }
+    };
     let generic_rank = &found.generic_rank;
     entries.push(Entry::Text(format!(
         "For a generic `{t}` (searched at `{t} = {}`, no root): {}, of functional rank {}.",
         shown(&told.generic_value),
         dimension(0, &found.generic),
-        generic_rank
+        rank_said(&found.generic, generic_rank)
     )));
     // The generic rank said once, above: the line after these compares each value's with it.
     let values: Vec<String> = (found.values.iter().enumerate())
@@ -108,7 +117,7 @@ pub fn exceptional_values_report(
                 "at `{t} = {}`, {}, of functional rank {}",
                 shown(&v.value),
                 dimension(k + 1, &v.found),
-                v.rank
+                rank_said(&v.found, &v.rank)
             )
         })
         .collect();

@@ -7,8 +7,7 @@ use std::time::Instant;
 
 use brackets::search::{
     basis_rank, fix_parameters, generation_decided, level_set_graph_variable, search, Integral,
-    NewIntegrals, SearchOptions, SearchResult, SearchSpace, SearchedLevel, MAX_RANK_MINORS,
-    SEARCH_RANK_MINORS,
+    NewIntegrals, SearchOptions, SearchResult, SearchSpace, SearchedLevel, SEARCH_RANK_MINORS,
 };
 use brackets::{BoundedRank, EngineError, PhaseSpace, System, UpperBound};
 use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, Vars};
@@ -872,7 +871,8 @@ pub fn command_line_search_report(
 /// [`command_line_search_report`] of the search `r` already run with `options`: the report
 /// of what it found, as that search's, with no search again (`superint search
 /// --find-values` shows the searches that confirmed its values so, with the parameter it
-/// solves for as `solved`, whose other values its advice does not propose). Its time is
+/// solves for as `solved`, whose other values its advice does not propose, beside the
+/// functional rank it took of the basis, shown as it is). Its time is
 /// that of the report alone.
 pub fn command_line_report_of(
     file: Option<&LoadedSystem>,
@@ -881,7 +881,7 @@ pub fn command_line_report_of(
     options: &SearchOptions,
     format: Format,
     r: &SearchResult,
-    solved: Option<Var>,
+    solved: Option<(Var, &BoundedRank)>,
 ) -> Result<Report, EngineError> {
     let restate = file.map(|file| Restate {
         file,
@@ -1025,7 +1025,7 @@ fn searched_and_reported(
 fn report_of(
     (name, system): (&str, &System),
     options: &SearchOptions,
-    (caller, restate, facts, solved): (Caller, Option<&Restate<'_>>, bool, Option<Var>),
+    (caller, restate, facts, solved): (Caller, Option<&Restate<'_>>, bool, Solved<'_>),
     r: &SearchResult,
 ) -> Result<Report, EngineError> {
     let start = Instant::now();
@@ -1083,6 +1083,10 @@ impl ShownForms {
     }
 }
 
+/// The parameter a `--find-values` run solves for and the functional rank it took of the
+/// search's basis ([`command_line_report_of`]).
+type Solved<'a> = Option<(Var, &'a BoundedRank)>;
+
 /// What the two sections of a search's report share: where the integrals hold, the names of
 /// the parameters kept symbolic, the letters of the integrals' labels and which integrals
 /// are shown.
@@ -1106,6 +1110,8 @@ struct Shared {
     /// The parameter a `--find-values` run solves for, whose other values the advice does
     /// not propose (`None` in an ordinary search).
     solved: Option<Var>,
+    /// The functional rank that run took of the basis, shown as it is.
+    solved_rank: Option<BoundedRank>,
     /// Whether the report holds what only JSON shows: the search's facts
     /// ([`Shared::search_facts`]) and each integral's claim as text to read back.
     facts: bool,
@@ -1118,7 +1124,7 @@ impl Shared {
         taken: &[&str],
         options: &SearchOptions,
         r: &SearchResult,
-        (caller, solved): (Caller, Option<Var>),
+        (caller, solved): (Caller, Solved<'_>),
         facts: bool,
     ) -> Self {
         let vars = system.vars();
@@ -1134,7 +1140,8 @@ impl Shared {
             shown: shown_integrals(r),
             names: Names::of_system(system),
             caller,
-            solved,
+            solved: solved.map(|(v, _)| v),
+            solved_rank: solved.map(|(_, rank)| rank.clone()),
             facts,
         }
     }
@@ -1192,12 +1199,16 @@ impl Shared {
         entries.extend(self.symbolic_note());
         // The rank of the basis found; a search whose rank cannot be certified (a denominator
         // vanishing at every sample point) is shown without it.
-        let rank_of = |r: &SearchResult| basis_rank(system, options, r, self.rank_minors()).ok();
-        let mut rank = (!r.basis.is_empty()).then(|| rank_of(r)).flatten();
-        // Where it is not exact, the known integrals' generation decided bounds it (the search
-        // reports the basis as it was, without the new integrals' section).
+        // A `--find-values` run's own, else taken here; where it is not exact, the known
+        // integrals' generation decided bounds it (the search reports the basis as it was,
+        // without the new integrals' section).
+        let rank_of = |r: &SearchResult| basis_rank(system, options, r, SEARCH_RANK_MINORS).ok();
+        let mut rank = match &self.solved_rank {
+            Some(rank) => Some(rank.clone()),
+            None => (!r.basis.is_empty()).then(|| rank_of(r)).flatten(),
+        };
         let decided = (rank.as_ref())
-            .filter(|rank| !rank.is_exact())
+            .filter(|rank| self.solved.is_none() && !rank.is_exact())
             .and_then(|_| generation_decided(system, options, r));
         if let Some(better) = decided.as_ref().and_then(rank_of) {
             rank = Some(better);
@@ -1229,16 +1240,6 @@ impl Shared {
              every monomial in the variables and these parameters, so what is found holds \
              for every value of them."
         )))
-    }
-
-    /// How many bordering minors a section's rank may expand: a `--find-values` section's is
-    /// the one its summary states (at most [`MAX_RANK_MINORS`]), an ordinary search's cheap
-    /// ([`SEARCH_RANK_MINORS`]).
-    fn rank_minors(&self) -> usize {
-        match self.solved {
-            Some(_) => MAX_RANK_MINORS,
-            None => SEARCH_RANK_MINORS,
-        }
     }
 
     /// The dimension of the space of integrals, by degree in the momenta and in the Poisson

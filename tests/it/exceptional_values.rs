@@ -1064,8 +1064,9 @@ fn harmonic_rotor_resonance_on_p_theta_one_has_functionally_new_integrals() {
 
 /// On `A = M·γ = 0`, whose leading monomial is no phase variable, each integral found is one
 /// remainder modulo `A` of many functions equal on the level set, whose ranks in the whole
-/// phase space differ (`A` itself is 0 there): the ranks shown are the remainders', said so,
-/// and no value is called functionally new, nor is it said that none is.
+/// phase space differ (`A` itself is 0 there): the ranks shown are the remainders', said so
+/// beside each rank as each search's section says it, and no value is called functionally
+/// new, nor is it said that none is.
 #[test]
 fn on_the_area_level_the_remainders_ranks_name_no_value_functionally_new() {
     let find = "search systems/heavy-top.toml --find-values I3 --poisson-degree 3";
@@ -1079,9 +1080,61 @@ fn on_the_area_level_the_remainders_ranks_name_no_value_functionally_new() {
         ),
         "{text}"
     );
-    assert!(text.contains("More integrals at I3 = 1/4"), "{text}");
+    assert!(
+        text.contains(
+            "More integrals at I3 = 1/4, 4 integrals (section 4), of functional rank 3 in the \
+             whole phase space, not on the level set and at I3 = 1,"
+        ),
+        "{text}"
+    );
+    assert!(
+        text.contains("Functional rank: 3 in the whole phase space, not on the level set"),
+        "{text}"
+    );
     assert!(!text.contains("unctionally new integrals,"), "{text}");
     assert!(!text.contains("has functionally new integrals"), "{text}");
+}
+
+/// Each value's rank is taken once, as its section shows it, with the bounds a search's rank
+/// has: the harmonic rotor on `p_θ = 1` at momenta, positions and order 3 has 50 integrals at
+/// `ω = −1`, whose rank 4 has (50 − 4)(6 − 4) = 92 minors bordering its nonzero one; the
+/// flow on the 5-dimensional level set bounds it at 4, in the summary as in the section (the
+/// summary said `at least 4` when it took the rank again by the minors alone, at most 64).
+#[test]
+fn find_values_takes_each_values_rank_once_as_its_section_shows_it() {
+    let args = [
+        "search",
+        "systems/harmonic-rotor.toml",
+        "--find-values",
+        "omega",
+        "--on",
+        "p_theta = 1",
+        "--fix",
+        "M=1,I=1,l=1",
+        "--momenta-degree",
+        "3",
+        "--positions-degree",
+        "3",
+        "--trig-degree",
+        "3",
+    ];
+    let text = normalize(&superint_ok(&args)).replace('\n', " ");
+    assert!(
+        text.contains("at ω = −1, 50 integrals (section 10), of functional rank 4,"),
+        "{text}"
+    );
+    let section = &text[text.find("10 At ω = −1: Search").expect("section 10")..];
+    assert!(
+        section.contains(
+            "≤ 3: 50. Functional rank: 4, the most a flow on the 5-dimensional level set allows"
+        ),
+        "{text}"
+    );
+    let json = superint_json(&args);
+    let minus_one = &json["exceptional_values"][0]["values"][3];
+    assert_eq!(minus_one["value"], "-1");
+    assert_eq!(minus_one["functional_rank"], 4);
+    assert_eq!(minus_one["functional_rank_exact"], true);
 }
 
 /// Six free particles with the potential `k a b c d e f`, quadratic in the momenta and of no

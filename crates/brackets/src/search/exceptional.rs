@@ -51,7 +51,8 @@
 //! each with a search it is given
 //! ([`exceptional_values`] gives the ordinary one; `superint search --find-values` its own,
 //! whose reports it shows), so that each value is searched once. Each search's basis gets its
-//! functional rank ([`functional_rank`]): a value whose rank is larger than the generic one
+//! functional rank ([`basis_rank`], at most [`MAX_RANK_MINORS`] bordering minors), taken once
+//! for the caller to show too: a value whose rank is larger than the generic one
 //! holds functionally new integrals, not only products of those every value has.
 //!
 //! On a level set `P = 0` (`SearchOptions::on`), `M(t)` is that of the search there: the
@@ -122,7 +123,7 @@ pub struct ExceptionalValues {
     pub determinants: Determinants,
     /// The ordinary search at [`Determinants::generic_value`].
     pub generic: SearchResult,
-    /// The functional rank of [`ExceptionalValues::generic`]'s basis ([`functional_rank`]).
+    /// The functional rank of [`ExceptionalValues::generic`]'s basis ([`basis_rank`]).
     pub generic_rank: BoundedRank,
     /// The rational values where the space holds more integrals, increasing, each with the
     /// ordinary search there.
@@ -213,7 +214,7 @@ pub struct ExceptionalValue {
     pub value: Rational,
     /// The search at it: more integrals than [`ExceptionalValues::generic`].
     pub found: SearchResult,
-    /// The functional rank of its basis ([`functional_rank`]): larger than
+    /// The functional rank of its basis ([`basis_rank`]): larger than
     /// [`ExceptionalValues::generic_rank`] where some of its integrals are functionally new,
     /// not functions of those every value has.
     pub rank: BoundedRank,
@@ -230,23 +231,11 @@ impl ExceptionalValue {
     }
 }
 
-/// How many minors bordering the nonzero one [`functional_rank`] expands to certify the rank
-/// from above; past that it gives the lower bound alone. The harmonic rotor at `ω = 1`, 20
-/// integrals of rank 5 in 6 phase variables, takes 15.
+/// How many minors bordering the nonzero one the ranks of `--find-values` take ([`basis_rank`]
+/// in [`Candidates::confirm`]) expand to certify the rank from above; past that they give the
+/// lower bound alone. The harmonic rotor at `ω = 1`, 20 integrals of rank 5 in 6 phase
+/// variables, takes 15 where no other bound meets it.
 pub const MAX_RANK_MINORS: usize = 64;
-
-/// The functional rank of a search's basis: the rank of the Jacobian of its integrals, at the
-/// fixed parameter values, by every phase variable ([`rank_within`], at most
-/// [`MAX_RANK_MINORS`] bordering minors). On a level set it is the rank in the whole phase
-/// space of the functions the search found, which is that on the level set where
-/// [`level_set_graph_variable`] gives a variable.
-pub fn functional_rank(
-    space: &PhaseSpace,
-    found: &SearchResult,
-) -> Result<BoundedRank, EngineError> {
-    let functions: Vec<Expr> = found.basis.iter().map(|i| i.fixed.clone()).collect();
-    rank_within(space, &functions, MAX_RANK_MINORS)
-}
 
 /// How many minors bordering the nonzero one [`basis_rank`] expands, where no bound that
 /// costs no symbolic minor meets the lower bound; past that it gives the lower bound alone.
@@ -254,8 +243,8 @@ pub fn functional_rank(
 /// the flow's bound has hundreds of bordering minors, each a symbolic determinant.
 pub const SEARCH_RANK_MINORS: usize = 16;
 
-/// The functional rank of a plain search's basis, as [`functional_rank`] takes it, but
-/// certified from above first by what costs no symbolic minor: the size (`rank ≤ N` integrals,
+/// The functional rank of a search's basis, the rank of the Jacobian of its integrals at the
+/// fixed parameter values by every phase variable ([`rank_within`]), certified from above first by what costs no symbolic minor: the size (`rank ≤ N` integrals,
 /// `≤ n` phase variables), and, where every integral is proved at the fixed
 /// values, the flow of `H` there (`rank ≤ n − 1` where `X_H` is not identically zero, on the
 /// level set of a condition that sets phase variables, `H` at the parameters it sets:
@@ -270,7 +259,9 @@ pub const SEARCH_RANK_MINORS: usize = 16;
 /// every integral is one for every value of them (where the condition holds), so the flow's
 /// bound holds at a generic value, and the rank is that over the functions of both.
 /// On a level set (`--on`) the integrals are integrals modulo its polynomial: the flow bounds
-/// their rank on it where it is a graph ([`level_set_graph_variable`]), and nowhere else.
+/// their rank on it where it is a graph ([`level_set_graph_variable`]); elsewhere the rank is
+/// that of the functions found in the whole phase space, with no bound but the bordering
+/// minors.
 pub fn basis_rank(
     system: &System,
     options: &SearchOptions,
@@ -428,7 +419,7 @@ fn level_set_graph(
 }
 
 /// The phase variable `v` the level set of a search is a graph over the others by, where
-/// [`functional_rank`] is the rank on the level set: `LM(P)` is `v` itself, so that `P` is a
+/// [`basis_rank`] is the rank on the level set: `LM(P)` is `v` itself, so that `P` is a
 /// number times `v` plus terms free of it, and no integral found holds `v` (none does: the
 /// monomials `LM(P)` divides are left out). Each integral is then its own restriction to the
 /// level set, and its Jacobian by every phase variable is that by the variables the level
@@ -461,14 +452,19 @@ pub struct Candidates {
 impl Candidates {
     /// The exceptional values among the roots: `search_at` searches at the generic value, then
     /// at each root, which is kept where its search finds more integrals than the generic
-    /// one. The search must be exact at the value it is given, as [`exceptional_values`]'
-    /// (the options with the parameter fixed there) is; a caller that shows each search may
-    /// run its own and keep what it shows, each value searched once.
+    /// one, and `rank_at` takes the functional rank of the generic search's basis and of each
+    /// kept one (as [`basis_rank`] does, at most [`MAX_RANK_MINORS`] bordering minors, with
+    /// the options the search had at that value). The search must be exact at the value it is
+    /// given, as [`exceptional_values`]' (the options with the parameter fixed there) is; a
+    /// caller that shows each search may run its own and keep what it shows, each value
+    /// searched once and each rank taken once.
     ///
     /// ```
-    /// use brackets::search::{exceptional_candidates, search, SearchOptions, SearchSpace};
+    /// use brackets::search::{
+    ///     basis_rank, exceptional_candidates, search, SearchOptions, SearchSpace, MAX_RANK_MINORS,
+    /// };
     /// use brackets::{PhaseSpace, System};
-    /// use trigpoly::{Expr, Vars};
+    /// use trigpoly::{Expr, Rational, Vars};
     ///
     /// // p²/2 + (x² + a y²)/2, isotropic at a = 1.
     /// let vars = Vars::builder()
@@ -481,10 +477,14 @@ impl Candidates {
     /// let a = vars.lookup("a").unwrap();
     /// let candidates = exceptional_candidates(&oscillator, &options, a)?;
     /// let mut searched = Vec::new();
-    /// let found = candidates.confirm(oscillator.space(), |value| {
-    ///     searched.push(value.to_string());
-    ///     search(&oscillator, &options.clone().fix(a, value.clone()))
-    /// })?;
+    /// let at = |value: &Rational| options.clone().fix(a, value.clone());
+    /// let found = candidates.confirm(
+    ///     |value| {
+    ///         searched.push(value.to_string());
+    ///         search(&oscillator, &at(value))
+    ///     },
+    ///     |value, found| basis_rank(&oscillator, &at(value), found, MAX_RANK_MINORS),
+    /// )?;
     /// // The generic value first, then each root once.
     /// assert_eq!(searched[0], found.determinants.generic_value.to_string());
     /// assert_eq!(searched.len(), 1 + found.values.len() + found.spurious.len());
@@ -492,19 +492,20 @@ impl Candidates {
     /// assert_eq!(values, ["0", "1"]);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
-    pub fn confirm<E: From<EngineError>>(
+    pub fn confirm<E>(
         self,
-        space: &PhaseSpace,
         mut search_at: impl FnMut(&Rational) -> Result<SearchResult, E>,
+        mut rank_at: impl FnMut(&Rational, &SearchResult) -> Result<BoundedRank, E>,
     ) -> Result<ExceptionalValues, E> {
-        let generic = search_at(&self.determinants.generic_value)?;
-        let generic_rank = functional_rank(space, &generic)?;
+        let generic_value = &self.determinants.generic_value;
+        let generic = search_at(generic_value)?;
+        let generic_rank = rank_at(generic_value, &generic)?;
         let mut values = Vec::new();
         let mut spurious = Vec::new();
         for value in self.roots {
             let found = search_at(&value)?;
             if found.basis.len() > generic.basis.len() {
-                let rank = functional_rank(space, &found)?;
+                let rank = rank_at(&value, &found)?;
                 values.push(ExceptionalValue { value, found, rank });
             } else {
                 spurious.push(value);
@@ -529,11 +530,15 @@ pub fn exceptional_values(
     options: &SearchOptions,
     parameter: Var,
 ) -> Result<ExceptionalValues, EngineError> {
-    exceptional_candidates(system, options, parameter)?.confirm(system.space(), |value| {
+    let at = |value: &Rational| {
         let mut options = options.clone();
         options.fixed.push((parameter, value.clone()));
-        search(system, &options)
-    })
+        options
+    };
+    exceptional_candidates(system, options, parameter)?.confirm(
+        |value| search(system, &at(value)),
+        |value, found| basis_rank(system, &at(value), found, MAX_RANK_MINORS),
+    )
 }
 
 /// The candidates for the values of `parameter` at which the space of `options` holds more
@@ -1671,11 +1676,15 @@ mod tests {
         let candidates = exceptional_candidates(&system, &options, a).unwrap();
         let roots = candidates.roots.clone();
         let mut searched = Vec::new();
+        let at = |value: &Rational| options.clone().fix(a, value.clone());
         let found = candidates
-            .confirm(system.space(), |value| {
-                searched.push(value.clone());
-                search(&system, &options.clone().fix(a, value.clone()))
-            })
+            .confirm(
+                |value| {
+                    searched.push(value.clone());
+                    search(&system, &at(value))
+                },
+                |value, found| basis_rank(&system, &at(value), found, MAX_RANK_MINORS),
+            )
             .unwrap();
         assert_eq!(searched.len(), roots.len() + 1);
         assert_eq!(searched[1..], roots[..]);

@@ -107,7 +107,7 @@ mod result;
 mod tests;
 
 pub use exceptional::{
-    basis_rank, exceptional_candidates, exceptional_values, functional_rank, generation_decided,
+    basis_rank, exceptional_candidates, exceptional_values, generation_decided,
     level_set_graph_variable, BasisGenerators, Candidates, Determinants, ExceptionalValue,
     ExceptionalValues, RuledOut, MAX_RANK_MINORS, SEARCH_RANK_MINORS,
 };
