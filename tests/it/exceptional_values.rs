@@ -1102,22 +1102,13 @@ fn on_the_area_level_the_remainders_ranks_name_no_value_functionally_new() {
 /// summary said `at least 4` when it took the rank again by the minors alone, at most 64).
 #[test]
 fn find_values_takes_each_values_rank_once_as_its_section_shows_it() {
+    let find = "search systems/harmonic-rotor.toml --find-values omega --fix M=1,I=1,l=1 \
+                --momenta-degree 3 --positions-degree 3 --trig-degree 3";
     let args = [
-        "search",
-        "systems/harmonic-rotor.toml",
-        "--find-values",
-        "omega",
-        "--on",
-        "p_theta = 1",
-        "--fix",
-        "M=1,I=1,l=1",
-        "--momenta-degree",
-        "3",
-        "--positions-degree",
-        "3",
-        "--trig-degree",
-        "3",
-    ];
+        &find.split_whitespace().collect::<Vec<_>>()[..],
+        &["--on", "p_theta = 1"],
+    ]
+    .concat();
     let text = normalize(&superint_ok(&args)).replace('\n', " ");
     assert!(
         text.contains("at ω = −1, 50 integrals (section 10), of functional rank 4,"),
