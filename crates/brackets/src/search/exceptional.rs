@@ -301,12 +301,17 @@ pub fn basis_rank(
             max_minors,
         )
     };
-    // Bounded by what generates every integral only where the rank is not otherwise exact:
-    // it costs nothing where the flow's bound is met.
-    let rank = rank_by(&[])?;
-    match BasisGenerators::of(found) {
-        Some(generators) if !rank.is_exact() => rank_by(&generators.functions(found)),
-        _ => Ok(rank),
+    // The known integrals, where they alone generate every integral, bound it at once (their
+    // reason said before the minors'); other generators only where it is not otherwise exact,
+    // costing nothing where the flow's bound is met.
+    let none_new = found.new.as_ref().is_some_and(|n| n.new.is_empty());
+    match BasisGenerators::of(found).map(|g| g.functions(found)) {
+        Some(known) if none_new => rank_by(&known),
+        Some(generators) => match rank_by(&[])? {
+            rank if rank.is_exact() => Ok(rank),
+            _ => rank_by(&generators),
+        },
+        None => rank_by(&[]),
     }
 }
 
