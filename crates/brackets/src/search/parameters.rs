@@ -333,9 +333,9 @@ pub(super) fn parameter_multiples(
     Ok(out)
 }
 
-/// The basis integrals that generate the space over the polynomials in the symbolic
-/// parameters: those outside the span of the parameter `multiples` and of the earlier
-/// generators.
+/// The basis integrals that generate the space over the rational functions of the symbolic
+/// parameters ([`ParameterModule::generators`](super::ParameterModule::generators)): those
+/// outside the span of the parameter `multiples` and of the earlier generators.
 pub(super) fn module_generators(
     problem: &Problem,
     kernel: &[SparseVec<Rational>],

@@ -141,8 +141,9 @@ pub struct NewIntegrals {
     pub past_degree_undecided: bool,
 }
 
-/// With parameters kept symbolic, the integrals found form a module over the polynomials in
-/// them: `A·I` is an integral whenever `I` is.
+/// With parameters kept symbolic, the integrals form a module over the polynomials in them
+/// (`A·I` is an integral whenever `I` is), generated over the rational functions of them by
+/// [`ParameterModule::generators`].
 #[derive(Clone, Debug)]
 #[non_exhaustive]
 pub struct ParameterModule {
@@ -151,7 +152,10 @@ pub struct ParameterModule {
     /// Indices into the basis of generators: the basis integrals that are not sums of
     /// parameter multiples `a·J` (`a` a parameter, `J` an integral of the space) and of
     /// earlier generators. Every integral of the space is a combination of them with
-    /// polynomial coefficients.
+    /// coefficients rational in the parameters: `(1 − R) I = C G`, `R` the parameter
+    /// multiples' (vanishing where every parameter is 0, so `det(1 − R)` is not zero), and
+    /// `I = (1 − R)⁻¹ C G` ([`super::BasisGenerators::Module`]); polynomial coefficients are
+    /// not proved.
     pub generators: Vec<usize>,
     /// The denominator atoms of these parameters alone (`a1 − a2`): polynomials in them, by
     /// which a multiple is a parameter multiple too (`--new-only` counts an integral whose
