@@ -321,6 +321,13 @@ pub fn basis_rank(
 /// exact. `None` where it was decided already, on a level set (where the known integrals
 /// generate modulo its polynomial alone), or where the search again stops at a limit or
 /// finds another basis.
+///
+/// It runs the search again rather than reusing the first's kernel and problem: [`super::search`]
+/// keeps neither in its [`SearchResult`], and keeping them (or a search that decides the new
+/// integrals after the rank) would change the search's interface for a case no documented
+/// search meets (each one's rank is exact at once). The second search costs about what the
+/// first does: the dipole rotor at 4/4/4 (`--fix M=2,omega=3,I=5,epsilon=7`) takes 0.12 s
+/// with it, 0.07 s without.
 pub fn generation_decided(
     system: &System,
     options: &SearchOptions,
