@@ -913,3 +913,42 @@ fn denominators_a_condition_where_one_plus_kappa_is_zero_is_refused() {
         "{err}"
     );
 }
+
+/// A condition's value that divides by a denominator the condition gives a value takes that
+/// value too: at `k = 1/2, x = 1/(k + 1)/3`, `x` is `2/9` on both sides of a claim, and at
+/// `m = 1, k = 1/(m + 1)`, `k` is `1/2`, not `1/(m + 1)` beside an `m` set to 1.
+#[test]
+fn denominators_a_value_dividing_by_a_denominator_the_condition_sets_takes_its_value() {
+    let file = |claims: &str| {
+        format!(
+            "name = \"t\"\nhamiltonian = \"p_x^2/2 + x^2/(2*(k + 1))\"\n[phase_space]\n\
+             coordinates = [\"x\"]\nparameters = [\"k\", \"m\"]\n\
+             denominators = [\"k + 1\", \"m + 1\"]\n{claims}"
+        )
+    };
+    let claims = "[[claim]]\nid = \"both-sides\"\nclaim = \"x = 1/(3*(k + 1))\"\n\
+        when = \"k = 1/2, x = 1/(k + 1)/3\"\n\
+        [[claim]]\nid = \"value\"\nclaim = \"x*(k + 1) = 1/3\"\n\
+        when = \"x = 1/(k + 1)/3, k = 1/2\"\n\
+        [[claim]]\nid = \"false-value\"\nclaim = \"x = 1/3\"\n\
+        when = \"k = 1/2, x = 1/(k + 1)/3\"\nexpect = \"refuted\"\n";
+    let f = scratch_text("denominators-set-values", "t.toml", &file(claims));
+    let out = superint_ok(&["check", f.to_str().unwrap()]);
+    for line in [
+        "[both-sides proved]",
+        "[value proved]",
+        "residual lhs − rhs = −1/9",
+        "3 claims in 1 file: 2 proved, 1 refuted; all as expected",
+    ] {
+        assert!(out.contains(line), "no {line:?} in:\n{out}");
+    }
+    let parameter = file(
+        "[[claim]]\nid = \"parameter\"\nclaim = \"k = 1/2\"\n\
+         when = \"m = 1, k = 1/(m + 1)\"\n",
+    )
+    .replace("\"k + 1\", ", "")
+    .replace("(2*(k + 1))", "2");
+    let f = scratch_text("denominators-set-values", "parameter.toml", &parameter);
+    let out = superint_ok(&["check", f.to_str().unwrap()]);
+    assert!(out.contains("[parameter proved]"), "{out}");
+}

@@ -255,6 +255,14 @@ impl Condition {
             }
             if !subs.iter().any(|(_, e)| sets(e, &subs)) {
                 let denominators = denominator_values(text, &subs)?;
+                // A value that holds an atom the condition gives a value (`x = 1/(κ + 1)` at
+                // `κ = 1/2`) takes it too, so that nothing the condition applies to keeps it.
+                let subs = match denominators.is_empty() {
+                    true => subs,
+                    false => (subs.iter())
+                        .map(|(v, e)| Ok((*v, e.subst_many(&denominators)?)))
+                        .collect::<Result<_, EngineError>>()?,
+                };
                 return Ok(Condition {
                     text: text.to_string(),
                     subs,
