@@ -909,7 +909,11 @@ fn denominators_a_condition_where_one_plus_kappa_is_zero_is_refused() {
     .concat();
     let err = superint_refused(&search);
     assert!(
-        err.contains("the condition sets κ, which the denominator (κ + 1) involves"),
+        err.contains(
+            "<command line>:1:9: the condition sets κ, which the denominator (κ + 1) involves: a \
+             search does not take a denominator's parameter from a condition; fix it instead \
+             (--fix kappa=…)"
+        ),
         "{err}"
     );
 }

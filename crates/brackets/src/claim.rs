@@ -418,7 +418,8 @@ impl Condition {
     /// involves, for a use that substitutes [`Condition::subs`] alone (a search):
     /// there the atom `1/(κ + 1)` would keep standing for `1/(κ + 1)`, not its value at the
     /// condition, and the radical `r = √(x² + y² + z²)` would keep `r² = x² + y² + z²` at
-    /// `z = 0`. [`Condition::apply`] (a claim's, a closure's) substitutes the denominators' values too.
+    /// `z = 0`. [`Condition::apply`] (a claim's, a closure's) substitutes the denominators'
+    /// values too.
     pub fn keeps_denominators(&self) -> Result<(), EngineError> {
         self.keeps_radicands()?;
         let Some((_, first)) = self.subs.first() else {
@@ -431,9 +432,11 @@ impl Condition {
             Some(refused(
                 *v,
                 format!(
-                    "the condition sets {}, which the denominator {} involves: a search or a                      closure under a condition on a denominator's variables is not supported                      (a claim's condition is)",
+                    "the condition sets {}, which the denominator {} involves: a search does not \
+                     take a denominator's parameter from a condition; fix it instead (--fix {}=…)",
                     vars.variable(*v).unicode(),
-                    vars.variable(*atom).unicode()
+                    vars.variable(*atom).unicode(),
+                    vars.variable(*v).ascii(),
                 ),
             ))
         });
