@@ -956,3 +956,24 @@ fn denominators_a_value_dividing_by_a_denominator_the_condition_sets_takes_its_v
     let out = superint_ok(&["check", f.to_str().unwrap()]);
     assert!(out.contains("[parameter proved]"), "{out}");
 }
+
+/// A rank claim under a condition on a denominator's parameter takes the atom at its value:
+/// at `k = 1/2`, `x + p_x/(k + 1)` and `x + 2p_x/3` are one function (rank 1, not 2), and
+/// `x + p_x/3` another (rank 2).
+#[test]
+fn denominators_a_rank_under_a_condition_on_a_denominators_parameter_takes_its_value() {
+    let system = "name = \"t\"\nhamiltonian = \"p_x^2/2 + x^2/(2*(k + 1))\"\n[phase_space]\n\
+        coordinates = [\"x\"]\nparameters = [\"k\"]\ndenominators = [\"k + 1\"]\n\
+        [[claim]]\nid = \"same\"\nclaim = \"rank(x + p_x/(k + 1), x + 2*p_x/3) = 1\"\n\
+        when = \"k = 1/2\"\n\
+        [[claim]]\nid = \"false-two\"\nclaim = \"rank(x + p_x/(k + 1), x + 2*p_x/3) = 2\"\n\
+        when = \"k = 1/2\"\nexpect = \"refuted\"\n\
+        [[claim]]\nid = \"other\"\nclaim = \"rank(x + p_x/(k + 1), x + p_x/3) = 2\"\n\
+        when = \"k = 1/2\"\n";
+    let f = scratch_text("denominators-rank", "t.toml", system);
+    let out = superint_ok(&["check", f.to_str().unwrap()]);
+    assert!(
+        out.contains("3 claims in 1 file: 2 proved, 1 refuted; all as expected"),
+        "{out}"
+    );
+}
