@@ -860,18 +860,18 @@ fn denominators_shifted_resonance_divides_by_one_plus_kappa_for_every_kappa() {
         "gyroscopic.toml",
         GYROSCOPIC_WITH_ONE_PLUS_KAPPA,
     );
-    let out = superint_ok(&["check", f.to_str().unwrap()]);
-    for line in [
-        "{Z e^{−iθ}, H} = 0 at p_θ = κ(x p_y − y p_x) + Iω/(1 + κ)",
-        "[resonant proved]",
-        "[false-unshifted refuted, as expected]",
-        "[exact-half proved]",
-        "(2 + κ)/(1 + κ) = 5/3 at κ = 1/2",
-        "[false-at-half refuted, as expected]",
-        "5 claims in 1 file: 3 proved, 2 refuted; all as expected",
-    ] {
-        assert!(out.contains(line), "no {line:?} in:\n{out}");
-    }
+    check_says(
+        &f,
+        &[
+            "{Z e^{−iθ}, H} = 0 at p_θ = κ(x p_y − y p_x) + Iω/(1 + κ)",
+            "[resonant proved]",
+            "[false-unshifted refuted, as expected]",
+            "[exact-half proved]",
+            "(2 + κ)/(1 + κ) = 5/3 at κ = 1/2",
+            "[false-at-half refuted, as expected]",
+            "5 claims in 1 file: 3 proved, 2 refuted; all as expected",
+        ],
+    );
 }
 
 /// A condition where a declared denominator in parameters alone is 0 is refused at the value,
@@ -937,15 +937,15 @@ fn denominators_a_value_dividing_by_a_denominator_the_condition_sets_takes_its_v
         [[claim]]\nid = \"false-value\"\nclaim = \"x = 1/3\"\n\
         when = \"k = 1/2, x = 1/(k + 1)/3\"\nexpect = \"refuted\"\n";
     let f = scratch_text("denominators-set-values", "t.toml", &file(claims));
-    let out = superint_ok(&["check", f.to_str().unwrap()]);
-    for line in [
-        "[both-sides proved]",
-        "[value proved]",
-        "residual lhs − rhs = −1/9",
-        "3 claims in 1 file: 2 proved, 1 refuted; all as expected",
-    ] {
-        assert!(out.contains(line), "no {line:?} in:\n{out}");
-    }
+    check_says(
+        &f,
+        &[
+            "[both-sides proved]",
+            "[value proved]",
+            "residual lhs − rhs = −1/9",
+            "3 claims in 1 file: 2 proved, 1 refuted; all as expected",
+        ],
+    );
     let parameter = file(
         "[[claim]]\nid = \"parameter\"\nclaim = \"k = 1/2\"\n\
          when = \"m = 1, k = 1/(m + 1)\"\n",
@@ -976,4 +976,12 @@ fn denominators_a_rank_under_a_condition_on_a_denominators_parameter_takes_its_v
         out.contains("3 claims in 1 file: 2 proved, 1 refuted; all as expected"),
         "{out}"
     );
+}
+
+/// `superint check file`'s output, asserted to hold each of `lines`.
+fn check_says(file: &std::path::Path, lines: &[&str]) {
+    let out = superint_ok(&["check", file.to_str().unwrap()]);
+    for line in lines {
+        assert!(out.contains(line), "no {line:?} in:\n{out}");
+    }
 }
