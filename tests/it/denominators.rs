@@ -985,3 +985,66 @@ fn check_says(file: &std::path::Path, lines: &[&str]) {
         assert!(out.contains(line), "no {line:?} in:\n{out}");
     }
 }
+
+/// A condition whose value of a declared denominator the engine cannot take (`k + m` is
+/// `m + 1/2` at `k = 1/2`, undeclared) is refused only where what it substitutes divides by
+/// that denominator: a claim on `1/(k + 1)` alone is proved, one on `1/(k + m)` or with a
+/// condition's value dividing by it is refused. A value that divides by another denominator
+/// (`k + 1` at `k = 1/(m + 1)`) is said to be unsupported, not given a declaration to write.
+#[test]
+fn denominators_a_condition_is_refused_only_where_a_denominator_it_cannot_value_is_used() {
+    let system = |denominators: &str, claims: &str| {
+        format!(
+            "name = \"t\"\nhamiltonian = \"p_x^2/2 + x^2/2\"\n[phase_space]\n\
+             coordinates = [\"x\"]\nparameters = [\"k\", \"m\"]\n\
+             denominators = [{denominators}]\n{claims}"
+        )
+    };
+    let declared = "\"k + 1\", \"k + m\"";
+    let unused = "[[claim]]\nid = \"unused\"\nclaim = \"1/(k + 1) = 2/3\"\nwhen = \"k = 1/2\"\n";
+    let f = scratch_text(
+        "denominators-unvalued",
+        "unused.toml",
+        &system(declared, unused),
+    );
+    check_says(&f, &["[unused proved]"]);
+    let used = "[[claim]]\nid = \"used\"\nclaim = \"1/(k + m) = 2/3\"\nwhen = \"k = 1/2\"\n";
+    let f = scratch_text(
+        "denominators-unvalued",
+        "used.toml",
+        &system(declared, used),
+    );
+    let err = superint_refused(&["check", f.to_str().unwrap()]);
+    assert!(
+        err.contains("used.toml:9:9: at k = 1/2 the denominator k + m is m + 1/2, and cannot"),
+        "{err}"
+    );
+    let f = f.to_str().unwrap();
+    let err = superint_refused(&["expand", f, "x", "--when", "k = 1/2, x = 1/(k + m)"]);
+    assert!(err.contains("the denominator k + m is m + 1/2"), "{err}");
+    let other = "[[claim]]\nid = \"free\"\nclaim = \"k*(m + 1) = 1\"\n\
+        when = \"k = 1/(m + 1)\"\n\
+        [[claim]]\nid = \"held\"\nclaim = \"x/(k + 1) = x\"\nwhen = \"k = 1/(m + 1)\"\n";
+    let f = scratch_text(
+        "denominators-unvalued",
+        "other.toml",
+        &system("\"k + 1\", \"m + 1\"", other),
+    );
+    let err = superint_refused(&["check", f.to_str().unwrap()]);
+    assert!(
+        err.contains(
+            "other.toml:13:9: at k = 1/(m + 1) the denominator k + 1 is 1 + 1/(m + 1), which \
+             divides by the denominator m + 1: a denominator's value that divides by another is \
+             not supported; give k a value where k + 1 is a number, a single term or a product \
+             of declared denominators, or leave it free"
+        ),
+        "{err}"
+    );
+    let free = other.split("[[claim]]\nid = \"held\"").next().unwrap();
+    let f = scratch_text(
+        "denominators-unvalued",
+        "free.toml",
+        &system("\"k + 1\", \"m + 1\"", free),
+    );
+    check_says(&f, &["[free proved]"]);
+}

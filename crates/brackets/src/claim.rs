@@ -26,6 +26,28 @@ pub struct Condition {
     /// parameters alone, holds a parameter the condition sets, with the atom's value there
     /// (`1/(κ + 1)` is `2/3` at `κ = 1/2`), which [`Condition::apply`] substitutes with the rest.
     denominators: Vec<(Var, Expr)>,
+    /// The declared denominators the condition gives no value the engine can take (`κ + 1` at
+    /// `κ = 2λ` with `2λ + 1` undeclared): refused by [`Condition::apply`] where what it
+    /// substitutes holds the atom, and by [`Condition::all`] where a value of the condition
+    /// does, not where nothing divides by it.
+    unvalued: Vec<Unvalued>,
+}
+
+/// A declared denominator that a condition sets a parameter of but gives no value the engine
+/// can take: its atom, the variable set, and why, the refusal of whatever holds the atom.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+struct Unvalued {
+    atom: Var,
+    set: Var,
+    why: String,
+}
+
+/// The values a condition gives the declared denominators it sets a parameter of
+/// ([`denominator_values`]): the atoms it takes at their value, and those it refuses to take.
+#[derive(Default)]
+struct DenominatorValues {
+    values: Vec<(Var, Expr)>,
+    unvalued: Vec<Unvalued>,
 }
 
 /// Why setting `v` to `value` is impossible when `v` is an angle: functions depend on it
@@ -166,7 +188,8 @@ impl Condition {
         Condition {
             text: text.to_string(),
             subs,
-            denominators,
+            denominators: denominators.values,
+            unvalued: denominators.unvalued,
         }
     }
 
@@ -177,8 +200,9 @@ impl Condition {
     /// condition is an equation, not a substitution. So is a value that is not real (for an
     /// angle, one off the unit circle), a radical or a denominator set as if it were a
     /// variable, a variable that a radicand or a denominator holding a phase variable involves
-    /// ([`Condition::keeps_denominators`]), and a value where a denominator in parameters
-    /// alone is zero (`κ = −1` of `1/(κ + 1)`). Every refusal is an
+    /// ([`Condition::keeps_denominators`]), a value where a denominator in parameters
+    /// alone is zero (`κ = −1` of `1/(κ + 1)`), and a value that holds a denominator the
+    /// condition gives no value it can take. Every refusal is an
     /// [`EngineError::RefusedCondition`] naming the variable, but that of values in different
     /// variable sets, or of a variable that is not a handle of theirs, which is
     /// [`AlgebraError::VarSetMismatch`]; so is the use of a condition with functions of another
@@ -240,6 +264,7 @@ impl Condition {
             text: text.to_string(),
             subs: subs.clone(),
             denominators: Vec::new(),
+            unvalued: Vec::new(),
         }
         .keeps_radicands()?;
         let sets = |e: &Expr, subs: &[(Var, Expr)]| subs.iter().any(|(v, _)| e.contains(*v));
@@ -254,20 +279,26 @@ impl Condition {
                 return Err(refusal);
             }
             if !subs.iter().any(|(_, e)| sets(e, &subs)) {
-                let denominators = denominator_values(text, &subs)?;
+                let DenominatorValues { values, unvalued } = denominator_values(text, &subs)?;
                 // A value that holds an atom the condition gives a value (`x = 1/(κ + 1)` at
                 // `κ = 1/2`) takes it too, so that nothing the condition applies to keeps it.
-                let subs = match denominators.is_empty() {
+                let subs: Vec<(Var, Expr)> = match values.is_empty() {
                     true => subs,
                     false => (subs.iter())
-                        .map(|(v, e)| Ok((*v, e.subst_many(&denominators)?)))
+                        .map(|(v, e)| Ok((*v, e.subst_many(&values)?)))
                         .collect::<Result<_, EngineError>>()?,
                 };
-                return Ok(Condition {
+                let condition = Condition {
                     text: text.to_string(),
                     subs,
-                    denominators,
-                });
+                    denominators: values,
+                    unvalued,
+                };
+                // One that holds an atom given no value has none.
+                for (_, value) in &condition.subs {
+                    condition.takes_its_denominators(value)?;
+                }
+                return Ok(condition);
             }
             subs = subs
                 .iter()
@@ -394,6 +425,7 @@ impl Condition {
     pub fn apply(&self, e: &Expr) -> Result<Expr, EngineError> {
         self.within(e.vars())?;
         self.keeps_radicands()?;
+        self.takes_its_denominators(e)?;
         if self.denominators.is_empty() {
             // Refused where a denominator it sets has no value (a `Condition::new`'s).
             denominator_values(&self.text, &self.subs)?;
@@ -408,10 +440,14 @@ impl Condition {
         Ok(e.subst_many(&with_denominators)?)
     }
 
-    /// Whether the condition gives a declared denominator a value: it sets a parameter that
-    /// the denominator's polynomial holds (`κ = 1/2` of `1/(κ + 1)`).
-    pub fn sets_denominators(&self) -> bool {
-        !self.denominators.is_empty()
+    /// Refuses `e` where it holds the atom of a declared denominator the condition sets a
+    /// parameter of but gives no value the engine can take (its `unvalued`); an
+    /// expression that does not divide by it takes the condition.
+    fn takes_its_denominators(&self, e: &Expr) -> Result<(), EngineError> {
+        match self.unvalued.iter().find(|u| e.contains(u.atom)) {
+            Some(u) => Err(refused(u.set, u.why.clone())),
+            None => Ok(()),
+        }
     }
 
     /// Refuses a condition that sets a variable a denominator atom's polynomial or a radicand
@@ -650,13 +686,14 @@ impl Condition {
 /// The values a condition's resolved `subs` (read as `text`) give the declared denominators
 /// whose polynomial `D` holds a variable it sets: the atom, which stands for `D`, takes `D`'s
 /// value at the condition, a nonzero number or a polynomial that division by the declared
-/// denominators reaches (`(κ + 1)` is `3/2` at `κ = 1/2`, so `1/(κ + 1)` is `2/3`). Refused ([`EngineError::RefusedCondition`], naming the variable
-/// set) where `D` holds a phase variable ([`Condition::sets_a_denominator`]), where it is zero
-/// at the condition (what divides by it has no value there) and where division does not reach
-/// it.
-fn denominator_values(text: &str, subs: &[(Var, Expr)]) -> Result<Vec<(Var, Expr)>, EngineError> {
+/// denominators reaches (`(κ + 1)` is `3/2` at `κ = 1/2`, so `1/(κ + 1)` is `2/3`). Refused
+/// ([`EngineError::RefusedCondition`], naming the variable set) where `D` holds a phase
+/// variable ([`Condition::sets_a_denominator`]) and where it is zero at the condition (what
+/// divides by it has no value there). Where division does not reach its value, or the value
+/// divides by a denominator, the atom is `unvalued`, refused only where held.
+fn denominator_values(text: &str, subs: &[(Var, Expr)]) -> Result<DenominatorValues, EngineError> {
     let Some((_, first)) = subs.first() else {
-        return Ok(Vec::new());
+        return Ok(DenominatorValues::default());
     };
     let vars = first.vars();
     let atoms = Expr::denominator_atoms(vars)?;
@@ -664,7 +701,7 @@ fn denominator_values(text: &str, subs: &[(Var, Expr)]) -> Result<Vec<(Var, Expr
         .iter()
         .filter_map(|(atom, d)| Some((*atom, d, subs.iter().find(|(v, _)| d.contains(*v))?.0)))
         .collect();
-    let mut values = Vec::new();
+    let mut values = DenominatorValues::default();
     for &(atom, d, v) in &set {
         if let Some(why) = Condition::sets_a_denominator(&atoms, v) {
             return Err(refused(v, why));
@@ -682,24 +719,23 @@ fn denominator_values(text: &str, subs: &[(Var, Expr)]) -> Result<Vec<(Var, Expr
         }
         // The atom stands for `D`, its negative powers for `1/D^k`: it takes `D`'s value,
         // whose inverse division must reach.
-        match Expr::one(vars).checked_div(&at) {
-            Ok(_) if !set.iter().any(|s| at.contains(s.0)) => values.push((atom, at)),
-            Ok(_) => {
-                return Err(refused(
-                    v,
-                    format!(
-                        "at {text} the denominator {d} is {at}, which holds a denominator the \
-                         condition also sets: give {name} a value free of it"
-                    ),
-                ))
+        // A value that divides by a denominator is no polynomial to divide by: clearing it
+        // (`1 + 1/(m + 1)` is `(m + 2)/(m + 1)`) would need division by a sum of atoms.
+        let held = atoms.iter().find(|(a, _)| at.contains(*a));
+        let why = match (held, Expr::one(vars).checked_div(&at)) {
+            (None, Ok(_)) => {
+                values.values.push((atom, at));
+                continue;
             }
-            Err(e) => {
-                return Err(refused(
-                    v,
-                    format!("at {text} the denominator {d} is {at}, and {e}"),
-                ))
-            }
-        }
+            (Some((_, other)), _) => format!(
+                "at {text} the denominator {d} is {at}, which divides by the denominator \
+                 {other}: a denominator's value that divides by another is not supported; give \
+                 {name} a value where {d} is a number, a single term or a product of declared \
+                 denominators, or leave it free"
+            ),
+            (None, Err(e)) => format!("at {text} the denominator {d} is {at}, and {e}"),
+        };
+        values.unvalued.push(Unvalued { atom, set: v, why });
     }
     Ok(values)
 }

@@ -360,10 +360,9 @@ impl System {
     /// never built. The same value as [`Condition::apply`] on [`System::flow`].
     pub fn flow_when(&self, f: &Expr, condition: &Condition) -> Result<Expr, EngineError> {
         match &self.dh {
-            // The fast path substitutes the condition's own variables alone, not the values
-            // it gives the denominators.
-            Some(dh) if !condition.sets_denominators() => {
-                condition.keeps_denominators()?;
+            // The fast path substitutes the condition's own variables alone: it is taken where
+            // the condition sets no parameter of a declared denominator (nor a radicand's).
+            Some(dh) if condition.keeps_denominators().is_ok() => {
                 self.space.bracket_with_gradient_at(f, dh, condition.subs())
             }
             _ => condition.apply(&self.flow(f)?),
