@@ -522,7 +522,8 @@ fn a_level_set_where_no_value_has_more_integrals_finds_none() {
 }
 
 /// A level set that the flow keeps at one value of the parameter alone is refused where it
-/// stands, saying that the parameter is free there: `{x p_y − y p_x, H} = (1 − a) x y`.
+/// stands, saying that the flow must keep it at every value of the parameter:
+/// `{x p_y − y p_x, H} = (1 − a) x y`.
 #[test]
 fn a_level_set_kept_at_one_value_of_the_parameter_alone_is_refused_saying_so() {
     let file = oscillator("kept-at-one.toml", "(x^2 + a*y^2)/2");
@@ -541,7 +542,10 @@ fn a_level_set_kept_at_one_value_of_the_parameter_alone_is_refused_saying_so() {
         "{refused}"
     );
     assert!(
-        refused.contains("a, searched for, is free here, so the flow must keep the level set"),
+        refused.contains(
+            "a is searched for, so the flow must keep the level set at every value of a, not \
+             only where that remainder vanishes (search there with --fix)"
+        ),
         "{refused}"
     );
 }

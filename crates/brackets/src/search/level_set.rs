@@ -207,9 +207,9 @@ impl LevelSet {
                 CheckedFor::ExceptionalValues(parameter) => {
                     let name = system.vars().variable(parameter).unicode();
                     format!(
-                        "; {name}, searched for, is free here, so the flow must keep the level \
-                         set at every value of {name}: one kept at some values alone (where that \
-                         remainder vanishes) is not searched for exceptional values"
+                        "; {name} is searched for, so the flow must keep the level set at every \
+                         value of {name}, not only where that remainder vanishes (search there \
+                         with --fix)"
                     )
                 }
                 CheckedFor::Search | CheckedFor::Claim => String::new(),
