@@ -31,6 +31,10 @@ pub struct Condition {
     /// substitutes holds the atom, and by [`Condition::all`] where a value of the condition
     /// does, not where nothing divides by it.
     unvalued: Vec<Unvalued>,
+    /// Why the condition cannot be applied at all, where [`Condition::new`] (which returns no
+    /// error) met a denominator it sets that holds a phase variable or is zero at it:
+    /// [`Condition::apply`] refuses with it, the variable set and the message.
+    refusal: Option<(Var, String)>,
 }
 
 /// A declared denominator that a condition sets a parameter of but gives no value the engine
@@ -184,12 +188,19 @@ impl Condition {
         let subs = vec![(v, value)];
         // A value that leaves a denominator without one is refused where the condition is
         // applied ([`Condition::apply`]).
-        let denominators = denominator_values(text, &subs).unwrap_or_default();
+        let (denominators, refusal) = match denominator_values(text, &subs) {
+            Ok(values) => (values, None),
+            Err(EngineError::RefusedCondition { var, message }) => {
+                (DenominatorValues::default(), Some((var, message)))
+            }
+            Err(e) => (DenominatorValues::default(), Some((v, e.to_string()))),
+        };
         Condition {
             text: text.to_string(),
             subs,
             denominators: denominators.values,
             unvalued: denominators.unvalued,
+            refusal,
         }
     }
 
@@ -265,6 +276,7 @@ impl Condition {
             subs: subs.clone(),
             denominators: Vec::new(),
             unvalued: Vec::new(),
+            refusal: None,
         }
         .keeps_radicands()?;
         let sets = |e: &Expr, subs: &[(Var, Expr)]| subs.iter().any(|(v, _)| e.contains(*v));
@@ -293,6 +305,7 @@ impl Condition {
                     subs,
                     denominators: values,
                     unvalued,
+                    refusal: None,
                 };
                 // One that holds an atom given no value has none.
                 for (_, value) in &condition.subs {
@@ -425,10 +438,11 @@ impl Condition {
     pub fn apply(&self, e: &Expr) -> Result<Expr, EngineError> {
         self.within(e.vars())?;
         self.keeps_radicands()?;
+        if let Some((v, why)) = &self.refusal {
+            return Err(refused(*v, why.clone()));
+        }
         self.takes_its_denominators(e)?;
         if self.denominators.is_empty() {
-            // Refused where a denominator it sets has no value (a `Condition::new`'s).
-            denominator_values(&self.text, &self.subs)?;
             return Ok(e.subst_many(&self.subs)?);
         }
         let with_denominators: Vec<(Var, Expr)> = self
