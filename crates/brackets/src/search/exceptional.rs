@@ -1765,16 +1765,6 @@ mod tests {
     /// Integer polynomials, lowest degree first, for the plain expansions below.
     type Poly = Vec<BigInt>;
 
-    fn poly_mul(a: &[BigInt], b: &[BigInt]) -> Poly {
-        let mut out = vec![BigInt::zero(); (a.len() + b.len()).saturating_sub(1)];
-        for (i, x) in a.iter().enumerate() {
-            for (j, y) in b.iter().enumerate() {
-                out[i + j] += x * y;
-            }
-        }
-        out
-    }
-
     fn poly_add(a: &mut Poly, b: &[BigInt], negate: bool) {
         if a.len() < b.len() {
             a.resize(b.len(), BigInt::zero());
@@ -1803,7 +1793,8 @@ mod tests {
                         .collect()
                 })
                 .collect();
-            poly_add(&mut det, &poly_mul(entry, &laplace(&minor)), k % 2 == 1);
+            let product = IntPoly::new(entry.clone()).mul(&IntPoly::new(laplace(&minor)));
+            poly_add(&mut det, product.coeffs(), k % 2 == 1);
         }
         det
     }
