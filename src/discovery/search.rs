@@ -429,11 +429,11 @@ fn radicals_in_space(r: &SearchResult) -> impl Iterator<Item = Var> + '_ {
 }
 
 /// The denominator atoms whose powers the space of `r` holds: none at
-/// `--denominators-degree 0`.
+/// `--denominators-degree 0`, nor those the condition gives a value.
 fn denominators_in_space(r: &SearchResult) -> impl Iterator<Item = Var> + '_ {
     r.vars
         .denominators()
-        .filter(|_| r.space.denominators_degree > 0)
+        .filter(|v| r.space.denominators_degree > 0 && !r.variables.valued_denominators.contains(v))
 }
 
 /// With denominators or radicals, the note that a monomial equal as a function to a sum of

@@ -9,7 +9,6 @@ use superint::system_file::{load_str, LimitsOverride, LoadedSystem};
 
 use crate::{
     holds, scratch_text, superint, superint_in, superint_json, superint_ok, superint_refused,
-    DEGREE_ONE_TRIG_ZERO,
 };
 
 const TWO_BODY: &str = "name = \"Calogero two-body\"\n\
@@ -875,8 +874,7 @@ fn denominators_shifted_resonance_divides_by_one_plus_kappa_for_every_kappa() {
 }
 
 /// A condition where a declared denominator in parameters alone is 0 is refused at the value,
-/// naming the denominator and the condition; one that sets a denominator's coordinate stays
-/// refused, as does a search under a condition on a denominator's parameter.
+/// naming the denominator and the condition.
 #[test]
 fn denominators_a_condition_where_one_plus_kappa_is_zero_is_refused() {
     let at_minus_one = GYROSCOPIC_WITH_ONE_PLUS_KAPPA.replace("kappa = 1/2", "kappa = -1");
@@ -902,20 +900,136 @@ fn denominators_a_condition_where_one_plus_kappa_is_zero_is_refused() {
     );
     let out = superint_ok(&["bracket", f, "1/(1 + kappa)", "H", "--when", "kappa = 1/2"]);
     assert!(out.contains("= 0"), "{out}");
-    let search = [
-        &["search", f, "--when", "kappa = 1/2"][..],
-        &DEGREE_ONE_TRIG_ZERO,
-    ]
-    .concat();
-    let err = superint_refused(&search);
+}
+
+/// The oscillator `(p_x² + p_y²)/2 + x²/2 + 3y²/(κ + 1)` with the denominator `κ + 1`, and the
+/// degrees of its searches (3 in the momenta and the positions): at `κ = 1/2` the frequencies
+/// are 1 and 2, in resonance, which brings a cubic integral that `κ = 1` has not.
+const RESONANT_AT_HALF: &str = "name = \"t\"\n\
+    hamiltonian = \"(p_x^2 + p_y^2)/2 + x^2/2 + 3*y^2/(kappa + 1)\"\n[phase_space]\n\
+    coordinates = [\"x\", \"y\"]\nparameters = [\"kappa\", \"m\"]\n\
+    denominators = [\"kappa + 1\"]\n";
+const DEGREES_THREE: [&str; 4] = ["--momenta-degree", "3", "--positions-degree", "3"];
+
+/// What a search report says it found: the dimension and rank paragraph, the counts by degree
+/// and the basis, without the condition it was searched at (in the title and the proofs) and
+/// without what it says of fixed values and lifts.
+fn found(report: &str) -> Vec<String> {
+    let from = report
+        .find("Dimension of the space")
+        .expect("a dimension line");
+    let to = report.find("2  Basis").expect("a basis section");
+    let mut lines: Vec<String> = report[from..to]
+        .lines()
+        .filter(|l| !l.is_empty())
+        .map(str::to_string)
+        .collect();
+    lines.extend(
+        report[to..]
+            .lines()
+            .filter(|l| l.starts_with("    I") && l.contains(" = "))
+            .map(str::to_string),
+    );
+    lines
+}
+
+/// A search under a condition on a declared denominator's parameter searches at its value:
+/// `1/(κ + 1)` at `κ = 1/2` finds what the same system with `2/3` written in its place finds
+/// (its cubic integral of the 1 : 2 resonance among them), the same space and the same
+/// numbers, and what `--fix kappa=1/2` finds; `κ = m − 1` makes `1/(κ + 1)` the `1/m` of a
+/// file written with it. At `κ = −1`, where `κ + 1` is 0, it is refused.
+#[test]
+fn denominators_a_search_under_a_condition_on_a_denominators_parameter_takes_its_value() {
+    let f = scratch_text("denominators-search-when", "t.toml", RESONANT_AT_HALF);
+    let by_hand = RESONANT_AT_HALF
+        .replace("3*y^2/(kappa + 1)", "2*y^2")
+        .replace(
+            "parameters = [\"kappa\", \"m\"]\ndenominators = [\"kappa + 1\"]\n",
+            "",
+        );
+    let by_hand = scratch_text("denominators-search-when", "by-hand.toml", &by_hand);
+    let search = |file: &std::path::Path, more: &[&str]| {
+        superint_ok(
+            &[
+                &["search", file.to_str().unwrap()][..],
+                more,
+                &DEGREES_THREE,
+            ]
+            .concat(),
+        )
+    };
+    let at_half = search(&f, &["--when", "kappa = 1/2"]);
+    let written = search(&by_hand, &[]);
+    // The whole report from the search to the proofs, which name the condition: the space
+    // (without powers of the number 1/(κ + 1)), the dimensions, the rank and the basis.
+    let body = |r: &str| r[r.find("1  Search").unwrap()..r.find("  {I1, H}").unwrap()].to_string();
+    assert_eq!(body(&at_half), body(&written));
+    assert!(
+        at_half.contains("5 claims: 5 proved, 0 refuted"),
+        "{at_half}"
+    );
+    assert!(
+        written.contains("    I5 = p_x² p_y − x² p_y + 4xy p_x"),
+        "{written}"
+    );
+    assert_eq!(found(&at_half), found(&search(&f, &["--fix", "kappa=1/2"])));
+    assert_ne!(found(&at_half), found(&search(&f, &[])));
+    // --find-values m under the condition finds the values of m (the frequency 2√m of y)
+    // that the file with 2m/3 written for m/(κ + 1) finds, and the same integrals there.
+    let values = |file: &std::path::Path, more: &[&str]| {
+        let out = search(file, &[more, &["--find-values", "m"]].concat());
+        let summary = out[..out.find("2  At m").expect("a section per value")].to_string();
+        let basis = out
+            .lines()
+            .filter(|l| l.starts_with("    I"))
+            .map(str::to_string);
+        (summary.replace("the t", "t"), basis.collect::<Vec<_>>())
+    };
+    let with_m = |name: &str, by: &str| {
+        let file = RESONANT_AT_HALF.replace("3*y^2/(kappa + 1)", by);
+        scratch_text("denominators-search-when", name, &file)
+    };
+    let at_half = values(
+        &with_m("m-at-half.toml", "3*m*y^2/(kappa + 1)"),
+        &["--when", "kappa = 1/2"],
+    );
+    let written = values(&with_m("m-by-hand.toml", "2*m*y^2"), &[]);
+    assert_eq!(at_half, written);
+    assert!(
+        at_half.0.contains("at m = 1/4, 10 integrals"),
+        "{}",
+        at_half.0
+    );
+    // κ = m − 1: κ + 1 is m, and m is 1 where the search fixes it.
+    let at_m = search(&f, &["--when", "kappa = m - 1"]);
+    let over_m = RESONANT_AT_HALF
+        .replace("3*y^2/(kappa + 1)", "3*y^2/m")
+        .replace(
+            "[\"kappa\", \"m\"]\ndenominators = [\"kappa + 1\"]",
+            "[\"m\"]",
+        );
+    let over_m = scratch_text("denominators-search-when", "over-m.toml", &over_m);
+    let written = search(&over_m, &[]);
+    assert_eq!(found(&at_m), found(&written));
+    assert!(
+        at_m.contains("The space: x^a y^b p_x^c p_y^d, with"),
+        "{at_m}"
+    );
+    let err = superint_refused(
+        &[
+            &["search", f.to_str().unwrap(), "--when", "kappa = -1"][..],
+            &DEGREES_THREE,
+        ]
+        .concat(),
+    );
     assert!(
         err.contains(
-            "<command line>:1:9: the condition sets κ, which the denominator (κ + 1) involves: a \
-             search does not take a denominator's parameter from a condition; fix it instead \
-             (--fix kappa=…)"
+            "at κ = −1 the denominator κ + 1 is 0, so what divides by it has no value there: \
+             give κ a value where κ + 1 is not 0, or leave it free"
         ),
         "{err}"
     );
+    assert!(!err.contains("panicked"), "{err}");
 }
 
 /// A condition's value that divides by a denominator the condition gives a value takes that

@@ -211,7 +211,7 @@ impl Condition {
     /// condition is an equation, not a substitution. So is a value that is not real (for an
     /// angle, one off the unit circle), a radical or a denominator set as if it were a
     /// variable, a variable that a radicand or a denominator holding a phase variable involves
-    /// ([`Condition::keeps_denominators`]), a value where a denominator in parameters
+    /// ([`Condition::cannot_set`]), a value where a denominator in parameters
     /// alone is zero (`κ = −1` of `1/(κ + 1)`), and a value that holds a denominator the
     /// condition gives no value it can take. Every refusal is an
     /// [`EngineError::RefusedCondition`] naming the variable, but that of values in different
@@ -434,24 +434,53 @@ impl Condition {
 
     /// Applies the substitution, and the values it gives the declared denominators whose
     /// polynomial, in parameters alone, holds a parameter it sets (`1/(κ + 1)` is `2/3` at
-    /// `κ = 1/2`).
+    /// `κ = 1/2`): [`Condition::substitution`].
     pub fn apply(&self, e: &Expr) -> Result<Expr, EngineError> {
         self.within(e.vars())?;
-        self.keeps_radicands()?;
-        if let Some((v, why)) = &self.refusal {
-            return Err(refused(*v, why.clone()));
-        }
+        self.applicable()?;
         self.takes_its_denominators(e)?;
-        if self.denominators.is_empty() {
-            return Ok(e.subst_many(&self.subs)?);
+        Ok(e.subst_many(&self.substitution())?)
+    }
+
+    /// The substitution [`Condition::apply`] makes: [`Condition::subs`], then the values the
+    /// condition gives the declared denominators whose polynomial, in parameters alone, holds
+    /// a parameter it sets (the atom of `κ + 1` to `3/2` at `κ = 1/2`). A caller that
+    /// substitutes it itself (a search) refuses first what [`Condition::values_denominators`]
+    /// refuses.
+    pub fn substitution(&self) -> Cow<'_, [(Var, Expr)]> {
+        match self.denominators.is_empty() {
+            true => Cow::Borrowed(&self.subs),
+            false => Cow::Owned(
+                self.subs
+                    .iter()
+                    .chain(&self.denominators)
+                    .cloned()
+                    .collect(),
+            ),
         }
-        let with_denominators: Vec<(Var, Expr)> = self
-            .subs
-            .iter()
-            .chain(&self.denominators)
-            .cloned()
-            .collect();
-        Ok(e.subst_many(&with_denominators)?)
+    }
+
+    /// Refuses the condition for a use that substitutes [`Condition::substitution`] into what
+    /// may divide by any declared denominator (a search, whose space holds their powers):
+    /// what [`Condition::apply`] refuses of any expression, and a denominator the condition
+    /// sets a parameter of but gives no value it can take, even where nothing holds it yet.
+    pub fn values_denominators(&self) -> Result<(), EngineError> {
+        self.applicable()?;
+        match self.unvalued.first() {
+            Some(u) => Err(refused(u.set, u.why.clone())),
+            None => Ok(()),
+        }
+    }
+
+    /// Refuses the condition wherever it is applied: where it sets a variable a radicand
+    /// involves ([`Condition::keeps_radicands`]), and where [`Condition::new`] met a
+    /// denominator it sets that holds a phase variable or is zero at it.
+    fn applicable(&self) -> Result<(), EngineError> {
+        self.keeps_radicands()?;
+        match &self.refusal {
+            Some((v, why)) => Err(refused(*v, why.clone())),
+            None => Ok(()),
+        }
     }
 
     /// Refuses `e` where it holds the atom of a declared denominator the condition sets a
@@ -464,37 +493,26 @@ impl Condition {
         }
     }
 
-    /// Refuses a condition that sets a variable a denominator atom's polynomial or a radicand
-    /// involves, for a use that substitutes [`Condition::subs`] alone (a search):
-    /// there the atom `1/(κ + 1)` would keep standing for `1/(κ + 1)`, not its value at the
-    /// condition, and the radical `r = √(x² + y² + z²)` would keep `r² = x² + y² + z²` at
-    /// `z = 0`. [`Condition::apply`] (a claim's, a closure's) substitutes the denominators'
-    /// values too.
-    pub fn keeps_denominators(&self) -> Result<(), EngineError> {
-        self.keeps_radicands()?;
+    /// Whether the condition substitutes its own variables alone ([`Condition::subs`]): no
+    /// declared denominator's polynomial or radicand involves a variable it sets, so that
+    /// [`Condition::apply`] has no atom to give a value (`1/(κ + 1)` at `κ = 1/2`) and no
+    /// radical to refuse (`r = √(x² + y² + z²)` at `z = 0`).
+    pub fn substitutes_its_variables_alone(&self) -> bool {
         let Some((_, first)) = self.subs.first() else {
-            return Ok(());
+            return true;
         };
-        let atoms = Expr::denominator_atoms(first.vars())?;
-        let refusal = atoms.iter().find_map(|(atom, d)| {
-            let (v, _) = self.subs.iter().find(|(v, _)| d.contains(*v))?;
-            let vars = d.vars();
-            Some(refused(
-                *v,
-                format!(
-                    "the condition sets {}, which the denominator {} involves: a search does not \
-                     take a denominator's parameter from a condition; fix it instead (--fix {}=…)",
-                    vars.variable(*v).unicode(),
-                    vars.variable(*atom).unicode(),
-                    vars.variable(*v).ascii(),
-                ),
-            ))
-        });
-        refusal.map_or(Ok(()), Err)
+        let vars = first.vars();
+        let holds_one = |polynomials: Result<Vec<(Var, Expr)>, _>| {
+            polynomials.map_or(true, |ps| {
+                ps.iter()
+                    .any(|(_, d)| self.subs.iter().any(|(v, _)| d.contains(*v)))
+            })
+        };
+        !holds_one(Expr::denominator_atoms(vars)) && !holds_one(Expr::radicals(vars))
     }
 
-    /// Refuses a condition that sets a variable a radicand involves (see
-    /// [`Condition::keeps_denominators`]).
+    /// Refuses a condition that sets a variable a radicand involves: the radical `r = √(x² +
+    /// y² + z²)` would keep `r² = x² + y² + z²` at `z = 0`.
     fn keeps_radicands(&self) -> Result<(), EngineError> {
         let Some((_, first)) = self.subs.first() else {
             return Ok(());
@@ -544,7 +562,7 @@ impl Condition {
     }
 
     /// Why a condition may not set `v`, if it may not: the radicand of one of the `radicals`
-    /// involves it (see [`Condition::keeps_denominators`]).
+    /// involves it (see [`Condition::keeps_radicands`]).
     pub fn sets_a_radicand(radicals: &[(Var, Expr)], v: Var) -> Option<String> {
         let (radical, radicand) = radicals.iter().find(|(_, r)| r.contains(v))?;
         let vars = radicand.vars();

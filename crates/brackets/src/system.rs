@@ -362,7 +362,7 @@ impl System {
         match &self.dh {
             // The fast path substitutes the condition's own variables alone: it is taken where
             // the condition sets no parameter of a declared denominator (nor a radicand's).
-            Some(dh) if condition.keeps_denominators().is_ok() => {
+            Some(dh) if condition.substitutes_its_variables_alone() => {
                 self.space.bracket_with_gradient_at(f, dh, condition.subs())
             }
             _ => condition.apply(&self.flow(f)?),

@@ -303,8 +303,9 @@ fn fixed_search_problem(
         level.check(system, &options.fixed)?;
     }
     if let Some(c) = condition {
-        // The search substitutes the condition's own variables alone.
-        c.keeps_denominators()?;
+        // The search substitutes the condition's values of the declared denominators too,
+        // into a space that may hold any of them.
+        c.values_denominators()?;
         c.kept_by_flow(system)?;
         c.defined_on(&[system.hamiltonian()], "the Hamiltonian")?;
     }

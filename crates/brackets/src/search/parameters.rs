@@ -158,7 +158,8 @@ pub(super) fn fixed_problem(
         .problem(system, options, parameters)
 }
 
-/// The Hamiltonian and the condition's values at the fixed `parameters`.
+/// The Hamiltonian and the condition's substitution ([`Condition::substitution`], with the
+/// values it gives the declared denominators) at the fixed `parameters`.
 pub(super) fn fixed_hamiltonian_and_condition(
     system: &System,
     options: &SearchOptions,
@@ -167,7 +168,7 @@ pub(super) fn fixed_hamiltonian_and_condition(
     let h = fix_parameters(system.hamiltonian(), parameters)?;
     let condition = match &options.condition {
         Some(c) => Some(
-            c.subs()
+            c.substitution()
                 .iter()
                 .map(|(v, e)| Ok((*v, fix_parameters(e, parameters)?)))
                 .collect::<Result<Vec<_>, EngineError>>()?,

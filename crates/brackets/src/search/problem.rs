@@ -223,6 +223,9 @@ fn space_variables(system: &System, condition: Option<&[(Var, Expr)]>) -> SpaceV
         .copied()
         .filter(|&v| value(v).is_some_and(of_phase_space))
         .collect();
+    // A declared denominator the condition gives a value is that value in the space, which
+    // its powers would only repeat.
+    let valued_denominators = (vars.denominators()).filter(|&v| fixed(v)).collect();
     SpaceVariables {
         coordinates: variables_of_kind(VarKind::Coordinate),
         momenta,
@@ -230,6 +233,7 @@ fn space_variables(system: &System, condition: Option<&[(Var, Expr)]>) -> SpaceV
         angles: variables_of_kind(VarKind::Angle),
         left_out,
         left_out_as_functions,
+        valued_denominators,
     }
 }
 
@@ -270,6 +274,7 @@ impl<'a> Exponents<'a> {
         variables: &'a SpaceVariables,
         symbolic: &'a [Var],
     ) -> Result<Self, EngineError> {
+        let valued = &variables.valued_denominators;
         let phase = system.space();
         // The angular vectors are kept one of each ±k, each giving cos and sin (k = 0 one
         // function): as many functions as vectors of either sign.
@@ -283,7 +288,7 @@ impl<'a> Exponents<'a> {
             (variables.poisson.len(), space.poisson_degree, false),
             (symbolic.len(), space.parameters_degree, false),
             (
-                phase.denominator_atoms().len(),
+                phase.denominator_atoms().len() - valued.len(),
                 space.denominators_degree,
                 false,
             ),
@@ -315,7 +320,10 @@ impl<'a> Exponents<'a> {
             momenta: vectors(&variables.momenta, space.momenta_degree),
             poisson: vectors(&variables.poisson, space.poisson_degree),
             parameters: vectors(symbolic, space.parameters_degree),
-            denominator_powers: exponent_vectors(atoms.len(), space.denominators_degree, false),
+            denominator_powers: exponent_vectors(atoms.len(), space.denominators_degree, false)
+                .into_iter()
+                .filter(|k| (atoms.iter().zip(k)).all(|((a, _), k)| *k == 0 || !valued.contains(a)))
+                .collect(),
             radical_powers: exponent_vectors(radicals.len(), space.radicals_degree, true),
             angular: exponent_vectors(variables.angles.len(), space.trig_degree, true)
                 .into_iter()

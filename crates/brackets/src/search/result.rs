@@ -372,6 +372,10 @@ pub struct SpaceVariables {
     /// `M·γ = 0`): there the space's functions are those of the others, and a function of
     /// such a variable is no integral for being one.
     pub left_out_as_functions: Vec<Var>,
+    /// The declared denominators that the condition gives a value (`κ + 1` at `κ = 1/2`,
+    /// [`Condition::substitution`](crate::Condition::substitution)), whose powers the space
+    /// leaves out: there they are numbers or functions of the other parameters.
+    pub valued_denominators: Vec<Var>,
 }
 
 /// Fixed values of parameters as they read, `M = 1, ω = 1` (in `Style::Ascii`, with the ASCII
