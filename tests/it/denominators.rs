@@ -940,14 +940,19 @@ fn found(report: &str) -> Vec<String> {
 /// file written with it. At `κ = −1`, where `κ + 1` is 0, it is refused.
 #[test]
 fn denominators_a_search_under_a_condition_on_a_denominators_parameter_takes_its_value() {
-    let f = scratch_text("denominators-search-when", "t.toml", RESONANT_AT_HALF);
-    let by_hand = RESONANT_AT_HALF
-        .replace("3*y^2/(kappa + 1)", "2*y^2")
-        .replace(
-            "parameters = [\"kappa\", \"m\"]\ndenominators = [\"kappa + 1\"]\n",
-            "",
-        );
-    let by_hand = scratch_text("denominators-search-when", "by-hand.toml", &by_hand);
+    // The file `name`, the system with each `(from, to)` of `replacements` made.
+    let file_with = |name: &str, replacements: &[(&str, &str)]| {
+        let text = (replacements.iter()).fold(RESONANT_AT_HALF.to_string(), |t, (from, to)| {
+            t.replace(from, to)
+        });
+        scratch_text("denominators-search-when", name, &text)
+    };
+    let f = file_with("t.toml", &[]);
+    let declared = "parameters = [\"kappa\", \"m\"]\ndenominators = [\"kappa + 1\"]\n";
+    let by_hand = file_with(
+        "by-hand.toml",
+        &[("3*y^2/(kappa + 1)", "2*y^2"), (declared, "")],
+    );
     let search = |file: &std::path::Path, more: &[&str]| {
         superint_ok(
             &[
@@ -985,10 +990,7 @@ fn denominators_a_search_under_a_condition_on_a_denominators_parameter_takes_its
             .map(str::to_string);
         (summary.replace("the t", "t"), basis.collect::<Vec<_>>())
     };
-    let with_m = |name: &str, by: &str| {
-        let file = RESONANT_AT_HALF.replace("3*y^2/(kappa + 1)", by);
-        scratch_text("denominators-search-when", name, &file)
-    };
+    let with_m = |name: &str, by: &str| file_with(name, &[("3*y^2/(kappa + 1)", by)]);
     let at_half = values(
         &with_m("m-at-half.toml", "3*m*y^2/(kappa + 1)"),
         &["--when", "kappa = 1/2"],
@@ -1002,13 +1004,13 @@ fn denominators_a_search_under_a_condition_on_a_denominators_parameter_takes_its
     );
     // κ = m − 1: κ + 1 is m, and m is 1 where the search fixes it.
     let at_m = search(&f, &["--when", "kappa = m - 1"]);
-    let over_m = RESONANT_AT_HALF
-        .replace("3*y^2/(kappa + 1)", "3*y^2/m")
-        .replace(
-            "[\"kappa\", \"m\"]\ndenominators = [\"kappa + 1\"]",
-            "[\"m\"]",
-        );
-    let over_m = scratch_text("denominators-search-when", "over-m.toml", &over_m);
+    let over_m = file_with(
+        "over-m.toml",
+        &[
+            ("3*y^2/(kappa + 1)", "3*y^2/m"),
+            (declared, "parameters = [\"m\"]\n"),
+        ],
+    );
     let written = search(&over_m, &[]);
     assert_eq!(found(&at_m), found(&written));
     assert!(
