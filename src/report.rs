@@ -197,7 +197,7 @@ pub enum Facts {
     /// Of `superint closure`.
     Closure(ClosureFacts),
     /// Of `superint search --find-values`.
-    ExceptionalValues(ExceptionalFacts),
+    ExceptionalValues(Box<ExceptionalFacts>),
 }
 
 /// What `superint search --find-values` found: the values of one parameter where the space
@@ -228,6 +228,9 @@ pub struct ExceptionalFacts {
     /// Whether `0`, a root of a determinant, was left out: `H` holds a negative power of the
     /// parameter and has no value there.
     pub zero_left_out: bool,
+    /// The roots of the determinants left out because a declared denominator in the
+    /// parameter is zero there (`H` has no value there), increasing, as fractions.
+    pub denominator_roots_left_out: Vec<String>,
 }
 
 /// The roots, not rational, of the determinants at which every block keeps its generic rank,
@@ -302,7 +305,15 @@ impl ExceptionalFacts {
             ruled_out: None,
             largest_minor,
             zero_left_out,
+            denominator_roots_left_out: Vec::new(),
         }
+    }
+
+    /// The facts with the roots of declared denominators left out (none unless given).
+    #[must_use]
+    pub fn with_denominator_roots_left_out(mut self, roots: Vec<String>) -> Self {
+        self.denominator_roots_left_out = roots;
+        self
     }
 
     /// The facts with the roots ruled out (`None`: none was).

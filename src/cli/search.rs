@@ -876,12 +876,16 @@ fn find_values(
         Subject::Builtin(..) => None,
     };
     // Each candidate searched once, as its report shows it: under `--when 'C = VALUE'` (with
-    // `a`'s own after), or on a level set, which takes no condition, with C fixed there, as
-    // `--fix` does. The engine keeps those with more integrals, and takes their ranks once,
+    // `a`'s own after), or with C fixed there, as `--fix` does, on a level set, which takes no
+    // condition, and where a declared denominator holds C, which a search does not take from
+    // a condition. The engine keeps those with more integrals, and takes their ranks once,
     // which their reports show.
+    let in_denominator =
+        (system.space().denominator_atoms().iter()).any(|(_, d)| d.contains(parameter));
     let at = |value: &trigpoly::Rational| -> anyhow::Result<SearchOptions> {
         let mut at = options.clone();
         match &options.on {
+            _ if in_denominator => at.fixed.push((parameter, value.clone())),
             Some(_) => at.fixed.push((parameter, value.clone())),
             None => {
                 let when = match &a.when {

@@ -170,6 +170,27 @@ pub fn exceptional_values_report(
              makes it a polynomial, which changes its solutions at no other value)."
         )));
     }
+    // As for 0: each root of a declared denominator in the parameter that was a root of a
+    // determinant, said where it was left out.
+    for (root, atom) in &told.denominator_roots_left_out {
+        let d = vars.variable(*atom).unicode();
+        entries.push(Entry::Text(
+            match system.hamiltonian().low_degree(*atom) < Some(0) {
+                true => format!(
+                    "`{t} = {}`, a root of the determinants, is no value: H divides by `{d}`, \
+                     which is zero there (each equation was multiplied by the power of `{d}` \
+                     that makes it a polynomial, which changes its solutions at no other value).",
+                    shown(root)
+                ),
+                false => format!(
+                    "`{t} = {}`, a root of the determinants, is not searched at: the space's \
+                     functions divide by `{d}`, which is zero there (--denominators-degree 0 \
+                     leaves them out).",
+                    shown(root)
+                ),
+            },
+        ));
+    }
     let unexamined = told.unexamined_in(vars);
     let real_roots = unexamined
         .as_ref()
@@ -247,7 +268,7 @@ pub fn exceptional_values_report(
                      rank: &brackets::BoundedRank| {
             ValueFacts::new(v.to_string(), r.basis.len(), section_of(k), rank.clone())
         };
-        entries.push(Entry::Data(Facts::ExceptionalValues(
+        entries.push(Entry::Data(Facts::ExceptionalValues(Box::new(
             ExceptionalFacts::new(
                 vars.variable(told.parameter).name().to_string(),
                 value(0, &told.generic_value, &found.generic, generic_rank),
@@ -260,6 +281,11 @@ pub fn exceptional_values_report(
                 told.largest_minor,
                 told.zero_left_out,
             )
+            .with_denominator_roots_left_out(
+                (told.denominator_roots_left_out.iter())
+                    .map(|(r, _)| r.to_string())
+                    .collect(),
+            )
             .with_ruled_out(ruled_out_real.map(|real| RuledOutFacts {
                 polynomial:
                     (told.ruled_out_in(vars)).map_or(String::new(), |p| p.render(Style::Ascii)),
@@ -268,7 +294,7 @@ pub fn exceptional_values_report(
                 prime: ruled_out.prime,
                 exact_blocks: ruled_out.exact_blocks,
             })),
-        )));
+        ))));
     }
     let first = searches
         .first()

@@ -162,7 +162,10 @@
 //!                   minors modulo the prime, rather than modulo it alone; 0 when none was
 //!                   ruled out),
 //!                   "largest_minor": { "size", "degree" }, "zero_left_out": bool (0, a root,
-//!                   left out: H has a negative power of the parameter and no value there) } ]
+//!                   left out: H has a negative power of the parameter and no value there),
+//!                   "denominator_roots_left_out": [string] (the roots, as fractions, left out
+//!                   where a declared denominator in the parameter is zero: H has no value
+//!                   there) } ]
 //!                   (only for `search --find-values`)
 //!   "warnings": [ { "section", "file", "line", "column", "message" } ]   (only where there
 //!                   are any: a name of the section's file run together and read as a
@@ -682,6 +685,7 @@ fn exceptional_values(f: &ExceptionalFacts, section: u32) -> Value {
         "ruled_out_exact_blocks": f.ruled_out.as_ref().map_or(0, |r| r.exact_blocks),
         "largest_minor": { "size": f.largest_minor.0, "degree": f.largest_minor.1 },
         "zero_left_out": f.zero_left_out,
+        "denominator_roots_left_out": f.denominator_roots_left_out,
     })
 }
 

@@ -347,8 +347,22 @@ fn what_find_values_does_not_take_is_refused() {
     );
     let denominator = superint_refused(&["search", file.to_str().unwrap(), "--find-values", "a"]);
     assert!(
-        denominator.contains("a in a declared denominator or radical"),
+        denominator
+            .contains("a in a declared denominator that holds a phase variable too, (x − ay)"),
         "{denominator}"
+    );
+    // A parameter in a declared radical, even one of parameters alone.
+    let file = scratch_text(
+        "exceptional-values",
+        "radical.toml",
+        "name = \"r\"\nhamiltonian = \"(p_x^2 + p_y^2)/2 + r*(x^2 + y^2)/2\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\"]\n\
+         radicals = { r = \"a^2 + 1\" }\n",
+    );
+    let radical = superint_refused(&["search", file.to_str().unwrap(), "--find-values", "a"]);
+    assert!(
+        radical.contains("does not take a in a declared radical, r, whose reduction depends on it"),
+        "{radical}"
     );
 }
 
@@ -638,9 +652,27 @@ fn rotor_values(
     fix: &str,
     [momenta, positions, order]: [&str; 3],
 ) -> serde_json::Value {
+    values_checked(
+        HARMONIC_ROTOR,
+        ["--on", "p_theta = 1"],
+        parameter,
+        fix,
+        [momenta, positions, order],
+    )
+}
+
+/// [`rotor_values`] for the system `file`, on the level set or under the condition `level`
+/// (`["--on", "p_theta = 1"]`, `["--when", "p_theta = 1"]`).
+fn values_checked(
+    file: &str,
+    level: [&str; 2],
+    parameter: &str,
+    fix: &str,
+    [momenta, positions, order]: [&str; 3],
+) -> serde_json::Value {
     let space = [
-        "--on",
-        "p_theta = 1",
+        level[0],
+        level[1],
         "--momenta-degree",
         momenta,
         "--positions-degree",
@@ -649,14 +681,7 @@ fn rotor_values(
         order,
     ];
     let find = [
-        &[
-            "search",
-            HARMONIC_ROTOR,
-            "--find-values",
-            parameter,
-            "--fix",
-            fix,
-        ][..],
+        &["search", file, "--find-values", parameter, "--fix", fix][..],
         &space,
     ]
     .concat();
@@ -665,7 +690,7 @@ fn rotor_values(
     let found = json["exceptional_values"][0].clone();
     let dimension_at = |value: &str| {
         let fixed = format!("{fix},{parameter}={value}");
-        let plain = [&["search", HARMONIC_ROTOR, "--fix", &fixed][..], &space].concat();
+        let plain = [&["search", file, "--fix", &fixed][..], &space].concat();
         superint_json(&plain)["searches"][0]["dimension"]
             .as_u64()
             .unwrap()
@@ -781,6 +806,142 @@ fn harmonic_rotor_resonant_moments_of_inertia_found_on_p_theta_one() {
     assert_eq!(values_found(&found), resonances(2, 1, false));
     assert_eq!(found["zero_left_out"], true);
     assert!(found["unexamined"].is_null());
+}
+
+/// The harmonic rotor with `p_θ²/(2I(1 + κ))`, `1 + κ` declared: `I(1 + κ)` stands for `I`,
+/// so the resonance `m ω = n p_θ/I` is `1 + κ = n p_θ/(m ω I)`, on `p_θ = 1` with `ω = I = 1`
+/// `κ = n/m − 1`. At momenta and positions degree 2 and order 2, `n/m` is `±2, ±1, ±1/2`
+/// (`m ≤ 2`, `0 < |n| ≤ 2`, as for `I` in section 30), so `κ = −3, −2, −3/2, −1/2, 0, 1`,
+/// by hand; the same as `I − 1` for the values of `I` of the rotor without the
+/// denominator, each with the same number of integrals. `κ = −1`, where `H` has no value, is
+/// left out and said to be.
+#[test]
+fn a_parameter_in_a_declared_denominator_has_the_resonances_it_moves_found() {
+    let file = scratch_text(
+        "exceptional-values",
+        "rotor-over-one-plus-kappa.toml",
+        "name = \"rotor\"\n\
+         hamiltonian = \"(p_x^2 + p_y^2)/(2*M) + M*omega^2*(x^2 + y^2)/2 + \
+         p_theta^2/(2*I*(1 + kappa))\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\nangles = [\"theta\"]\n\
+         parameters = [\"M\", \"omega\", \"I\", \"kappa\"]\ndenominators = [\"1 + kappa\"]\n",
+    );
+    let file = file.to_str().unwrap();
+    let when = ["--when", "p_theta = 1"];
+    let space = ["2", "2", "2"];
+    let found = values_checked(file, when, "kappa", "M=1,I=1,omega=1", space);
+    assert_eq!(values_found(&found), ["-3", "-2", "-3/2", "-1/2", "0", "1"]);
+    assert_eq!(
+        found["denominator_roots_left_out"],
+        serde_json::json!(["-1"])
+    );
+    assert!(found["unexamined"].is_null());
+    // The independent route: I of the rotor without the denominator, shifted by −1.
+    let by_i = values_checked(HARMONIC_ROTOR, when, "I", "omega=1,M=1,l=1", space);
+    assert_eq!(values_found(&by_i), resonances(2, 2, false));
+    let shifted = |v: &serde_json::Value| {
+        let value = v["value"].as_str().unwrap();
+        let (n, m) = value.split_once('/').unwrap_or((value, "1"));
+        let (n, m): (i64, i64) = (n.parse().unwrap(), m.parse().unwrap());
+        let value = match m {
+            1 => (n - m).to_string(),
+            _ => format!("{}/{m}", n - m),
+        };
+        (value, v["dimension"].as_u64())
+    };
+    let dimensions = |f: &serde_json::Value| {
+        (f["values"].as_array().unwrap().iter())
+            .map(|v| {
+                (
+                    v["value"].as_str().unwrap().to_string(),
+                    v["dimension"].as_u64(),
+                )
+            })
+            .collect::<Vec<_>>()
+    };
+    let by_i_shifted: Vec<_> = by_i["values"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(shifted)
+        .collect();
+    assert_eq!(dimensions(&found), by_i_shifted);
+    assert_eq!(found["generic"]["dimension"], by_i["generic"]["dimension"]);
+    let text = normalize(&superint_ok(&[
+        "search",
+        file,
+        "--find-values",
+        "kappa",
+        "--fix",
+        "M=1,I=1,omega=1",
+        "--when",
+        "p_theta = 1",
+    ]));
+    assert!(
+        text.contains(
+            "κ = −1, a root of the determinants, is no value: H divides by (κ + 1), which is \
+             zero there"
+        ),
+        "{text}"
+    );
+}
+
+/// The gyroscopic rotor with `κ + 1` declared, which its `H` does not divide by: at
+/// `--denominators-degree 0` the values of `κ` are the file's, `2κ ∈ {−2, …, 2}` (its `Q
+/// e^{2iκθ}` of order 2), `κ = −1` among them; with the space's powers of `1/(κ + 1)`, which
+/// have no value at `κ = −1`, that root is said not to be searched at, and the others stay.
+#[test]
+fn a_declared_denominator_that_h_does_not_divide_by_leaves_its_root_out_only_for_the_space() {
+    let text = std::fs::read_to_string("systems/gyroscopic-rotor.toml")
+        .unwrap()
+        .replace(
+            "parameters = [\"M\", \"omega\", \"I\", \"kappa\"]",
+            "parameters = [\"M\", \"omega\", \"I\", \"kappa\"]\ndenominators = [\"kappa + 1\"]",
+        );
+    assert!(text.contains("denominators"));
+    let file = scratch_text(
+        "exceptional-values",
+        "gyroscopic-over-kappa-plus-one.toml",
+        &text,
+    );
+    let file = file.to_str().unwrap();
+    let find = |extra: &[&'static str]| {
+        let space = [
+            "--momenta-degree",
+            "2",
+            "--positions-degree",
+            "2",
+            "--trig-degree",
+            "2",
+        ];
+        let kappa = [
+            "search",
+            file,
+            "--find-values",
+            "kappa",
+            "--fix",
+            "M=1,I=1,omega=1",
+        ];
+        [&kappa[..], &space, extra].concat()
+    };
+    let run = |extra: &[&'static str]| superint_json(&find(extra))["exceptional_values"][0].clone();
+    let whole = run(&["--denominators-degree", "0"]);
+    assert_eq!(values_found(&whole), ["-1", "-1/2", "0", "1/2", "1"]);
+    assert_eq!(whole["denominator_roots_left_out"], serde_json::json!([]));
+    let with_powers = run(&[]);
+    assert_eq!(values_found(&with_powers), ["-1/2", "0", "1/2", "1"]);
+    assert_eq!(
+        with_powers["denominator_roots_left_out"],
+        serde_json::json!(["-1"])
+    );
+    let text = normalize(&superint_ok(&find(&[])));
+    assert!(
+        text.contains(
+            "κ = −1, a root of the determinants, is not searched at: the space's functions \
+             divide by (κ + 1), which is zero there (--denominators-degree 0 leaves them out)."
+        ),
+        "{text}"
+    );
 }
 
 /// `search --help` says what becomes of the irrational roots: ruled out where every block

@@ -5,7 +5,9 @@
 //! With `t` kept as a variable and the other parameters fixed, the equations `{Σ c_j φ_j, H} = 0`
 //! are `M(t) c = 0`, the entries of `M` polynomials in `t` (a row with negative powers of `t`, from
 //! a negative power in `H`, multiplied by `t^k` for its largest negative exponent `−k`, which
-//! changes the kernel at no `t ≠ 0`; `t = 0`, where `H` has no value, is then no candidate). Let
+//! changes the kernel at no `t ≠ 0`; `t = 0`, where `H` has no value, is then no candidate; so
+//! for a declared denominator `d(t)` of parameters alone, each row times `d(t)^k`, its roots no
+//! candidates, the unknowns `φ/d(t)^e` left out as the columns of `φ` times `1/d(t)^e`). Let
 //! `r` be its generic rank: the values where the kernel is larger are those where every `r×r` minor
 //! vanishes. `M` splits into blocks (unknowns sharing no equation); in each, the rank and an `r×r`
 //! submatrix `S` nonsingular at a random point are found modulo a prime, and `det S(t)` is computed
@@ -156,6 +158,12 @@ pub struct Determinants {
     /// Whether `0` was a root of a determinant left out as no candidate: `H` holds a negative
     /// power of the parameter and has no value there.
     pub zero_left_out: bool,
+    /// The roots of a determinant left out as no candidates because a declared denominator in
+    /// the parameter (at the other parameters' fixed values) is zero there, increasing, each
+    /// with that denominator's atom: `H`, where it divides by it, has no value there, nor, where
+    /// the space has its powers ([`super::SearchSpace::denominators_degree`]), the space's
+    /// functions.
+    pub denominator_roots_left_out: Vec<(Rational, Var)>,
 }
 
 impl Determinants {
@@ -457,7 +465,8 @@ pub struct Candidates {
     /// apart from those not examined.
     pub determinants: Determinants,
     /// The rational roots of the determinants, increasing (without `0` where `H` has no
-    /// value there).
+    /// value there, nor the roots of a declared denominator in the parameter,
+    /// [`Determinants::denominator_roots_left_out`]).
     pub roots: Vec<Rational>,
 }
 
@@ -558,8 +567,9 @@ pub fn exceptional_values(
 /// a parameter that is not one of `H`'s, or is fixed, kept symbolic or set by the condition;
 /// parameters kept symbolic; a level set whose polynomial holds the parameter (a level set is
 /// taken at the fixed values of its parameters) and what a search on a level set does not
-/// take; a parameter in a declared denominator or radical
-/// (a negative power of it in `H` is taken, and `0` is then no candidate);
+/// take; a parameter in a declared radical, or in a declared denominator that holds a phase
+/// variable too (a negative power of it in `H` is taken, and `0` is then no candidate; so is
+/// a declared denominator of parameters alone that holds it, whose roots are then none);
 /// and, as a limit ([`EngineLimit::MinorRows`]), a block whose minor has more rows than
 /// [`SearchOptions::max_minor`].
 pub fn exceptional_candidates(
@@ -569,11 +579,22 @@ pub fn exceptional_candidates(
 ) -> Result<Candidates, EngineError> {
     refuse(system, options, parameter)?;
     let problem = problem_with_parameter_kept(system, options, parameter)?;
-    let images = (0..problem.unknowns.len())
-        .map(|j| problem.image(&problem.expr(j, &Rational::one())?))
+    // The denominators that hold the parameter, in parameters alone ([`refuse`]), are cleared
+    // row by row as its negative powers are ([`PolyMatrix::new`]); the others here.
+    let (in_parameter, others): (Vec<_>, Vec<_>) =
+        (system.space().denominator_atoms().iter().cloned())
+            .partition(|(_, d): &(Var, Expr)| d.contains(parameter));
+    // An unknown `φ/d(t)^e` has the column of `φ` times `1/d(t)^e`, and `φ` is a combination
+    // of the unknowns free of these atoms (no such combination of their powers is `1`): it
+    // changes the rank at no value of `t` where `d ≠ 0`, and is left out.
+    let images = (problem.unknowns.iter().enumerate())
+        .filter(|(_, u)| in_parameter.iter().all(|(v, _)| u.phase[v.index()] == 0))
+        .map(|(j, _)| problem.image(&problem.expr(j, &Rational::one())?))
         .collect::<Result<Vec<Expr>, EngineError>>()?;
+    crate::clearing::refuse_division_by_zero(&in_parameter, &problem.parameters, images.iter())?;
+    let denominators = denominators_in(parameter, &in_parameter, &problem.parameters)?;
     let images = match crate::clearing::Clearing::new(
-        system.space().denominator_atoms(),
+        &others,
         system.space().radicals(),
         &problem.parameters,
         images.iter(),
@@ -581,7 +602,7 @@ pub fn exceptional_candidates(
         Some(clearing) => clearing.apply_all(&images)?,
         None => images,
     };
-    let matrix = PolyMatrix::new(&images, parameter, &problem.variables.angles);
+    let matrix = PolyMatrix::new(&images, parameter, &problem.variables.angles, &denominators);
     let mut determinants = Vec::new();
     let mut ranked_blocks = Vec::new();
     let mut largest_minor = (0, 0);
@@ -616,18 +637,40 @@ pub fn exceptional_candidates(
             rest = rest.lcm(&left);
         }
     }
-    // With a negative power of `t` in H, `t = 0` is no value of H: not a candidate.
+    // With a negative power of `t` in H, `t = 0` is no value of H: not a candidate; nor is a
+    // root of a declared denominator in `t` that H or the space's functions divide by (a
+    // search there has no value for them), irrational ones divided out of the rest.
     let no_value_at_zero =
         (system.hamiltonian().terms().into_iter()).any(|term| term.exponent(parameter) < 0);
     let zero_left_out = no_value_at_zero && roots.iter().any(Rational::is_zero);
     if no_value_at_zero {
         roots.retain(|r| !r.is_zero());
     }
+    let divided_by = |atom: Var| {
+        options.space.denominators_degree > 0 || system.hamiltonian().low_degree(atom) < Some(0)
+    };
+    let poles: Vec<&(Var, IntPoly)> = (denominators.iter())
+        .filter(|(v, _)| divided_by(*v))
+        .collect();
+    let zero_of = |r: &Rational| poles.iter().find(|(_, d)| d.vanishes_at(r));
+    let no_value = |r: &Rational| zero_of(r).is_some();
+    let mut denominator_roots_left_out: Vec<(Rational, Var)> = (roots.iter())
+        .filter_map(|r| zero_of(r).map(|(v, _)| (r.clone(), *v)))
+        .collect();
+    roots.retain(|r| !no_value(r));
+    for (_, d) in &poles {
+        let common = rest.gcd(d);
+        if common.degree().unwrap_or(0) > 0 {
+            rest = rest.divide_out(&common);
+        }
+    }
     roots.sort();
     roots.dedup();
+    denominator_roots_left_out.sort_by(|a, b| a.0.cmp(&b.0));
+    denominator_roots_left_out.dedup_by(|a, b| a.0 == b.0);
     let generic_value = (1..)
         .map(|k| Rational::new(2 * k + 5, 1))
-        .find(|v| determinants.iter().all(|d| !d.vanishes_at(v)))
+        .find(|v| !no_value(v) && determinants.iter().all(|d| !d.vanishes_at(v)))
         .expect("a polynomial has finitely many roots");
     let blocks: Vec<RankedBlock> = (ranked_blocks.into_iter().zip(&determinants))
         .map(|((columns, rank), determinant)| RankedBlock {
@@ -648,6 +691,7 @@ pub fn exceptional_candidates(
             ruled_out,
             largest_minor,
             zero_left_out,
+            denominator_roots_left_out,
         },
         roots,
     })
@@ -694,7 +738,14 @@ fn refuse(system: &System, options: &SearchOptions, parameter: Var) -> Result<()
         ));
     }
     let name = vars.variable(parameter).name();
-    let refusal = if !system.hamiltonian().contains(parameter) {
+    let space = system.space();
+    let symbol_holds = |symbols: &[(Var, Expr)]| {
+        (symbols.iter()).any(|(v, e)| e.contains(parameter) && system.hamiltonian().contains(*v))
+    };
+    let held = system.hamiltonian().contains(parameter)
+        || symbol_holds(space.denominator_atoms())
+        || symbol_holds(space.radicals());
+    let refusal = if !held {
         Some(format!("H does not hold {name}"))
     } else if !options.symbolic.is_empty() {
         Some("parameters kept symbolic: the others are fixed".into())
@@ -722,15 +773,21 @@ fn refuse(system: &System, options: &SearchOptions, parameter: Var) -> Result<()
         Some(format!(
             "a condition that sets {name}, the parameter solved for"
         ))
-    } else if system
-        .space()
-        .denominator_atoms()
-        .iter()
-        .chain(system.space().radicals())
-        .any(|(_, e)| e.contains(parameter))
-    {
+    } else if let Some((r, _)) = (space.radicals().iter()).find(|(_, e)| e.contains(parameter)) {
         Some(format!(
-            "{name} in a declared denominator or radical, whose clearing depends on it"
+            "{name} in a declared radical, {}, whose reduction depends on it",
+            vars.variable(*r).unicode()
+        ))
+    } else if let Some((d, _)) = (space.denominator_atoms().iter()).find(|(_, e)| {
+        e.contains(parameter)
+            && vars
+                .vars()
+                .any(|v| vars.variable(v).kind() != VarKind::Parameter && e.contains(v))
+    }) {
+        Some(format!(
+            "{name} in a declared denominator that holds a phase variable too, {}, whose \
+             clearing depends on both",
+            vars.variable(*d).unicode()
         ))
     } else {
         None
@@ -755,10 +812,54 @@ fn polynomial_in(vars: &Vars, t: Var, p: &IntPoly) -> Expr {
     out
 }
 
+/// Each atom of `atoms` (declared denominators holding `t`, in parameters alone) with its
+/// polynomial `d(t)` at the other parameters' fixed values, integer coefficients (times the
+/// lcm of their denominators, which changes no root). Refused: one with a coefficient that
+/// is not real, which would mix a row's real and imaginary parts.
+fn denominators_in(
+    t: Var,
+    atoms: &[(Var, Expr)],
+    parameters: &[(Var, Rational)],
+) -> Result<Vec<(Var, IntPoly)>, EngineError> {
+    atoms
+        .iter()
+        .map(|(v, d)| {
+            let at = fix_parameters(d, parameters)?;
+            let vars = at.vars();
+            if !at.is_real() || at.terms().into_iter().any(|term| term.exponent(t) < 0) {
+                return Err(EngineError::Invalid(format!(
+                    "the search for the exceptional values of {} does not take the declared \
+                     denominator {}, whose coefficients are not real",
+                    vars.variable(t).name(),
+                    vars.variable(*v).unicode()
+                )));
+            }
+            let mut coeffs: Vec<Rational> = Vec::new();
+            for term in at.terms() {
+                let k = usize::try_from(term.exponent(t)).expect("no negative power");
+                if coeffs.len() <= k {
+                    coeffs.resize(k + 1, Rational::zero());
+                }
+                coeffs[k] += &term.coeff().re;
+            }
+            let lcm = (coeffs.iter()).fold(BigInt::one(), |l, c| {
+                num_integer::Integer::lcm(&l, &c.denom().to_bigint())
+            });
+            let scale = Rational::from(lcm);
+            let integers = (coeffs.iter())
+                .map(|c| (c * &scale).numer().to_bigint())
+                .collect();
+            Ok((*v, IntPoly::new(integers)))
+        })
+        .collect()
+}
+
 /// The equations with the parameter `t` kept: each column an unknown, each entry the
 /// polynomial in `t`, integer coefficients, each row scaled by the lcm of its denominators.
 /// A row with negative powers of `t` (a negative power in H) is multiplied by `t^k`, `k` the
-/// largest negative exponent in it, which changes the kernel at no `t ≠ 0`.
+/// largest negative exponent in it, which changes the kernel at no `t ≠ 0`; so by `d(t)^k`
+/// for the atom of each declared denominator `d(t)` in `t` ([`denominators_in`]), `a^j` then
+/// `d(t)^{j + k}` (`a·d = 1`), which changes it at no `t` where `d ≠ 0`.
 struct PolyMatrix {
     /// By column, the rows and entries (coefficients lowest degree first).
     columns: Vec<Vec<(usize, Vec<BigInt>)>>,
@@ -767,19 +868,28 @@ struct PolyMatrix {
 
 impl PolyMatrix {
     /// The equations of the `images`: a row for the real and the imaginary part of each
-    /// monomial other than `t`'s with a canonical `e^{ik·θ}`.
-    fn new(images: &[Expr], t: Var, angles: &[Var]) -> Self {
+    /// monomial other than `t`'s and the `denominators`' atoms' with a canonical `e^{ik·θ}`.
+    fn new(images: &[Expr], t: Var, angles: &[Var], denominators: &[(Var, IntPoly)]) -> Self {
         let mut row_of: FxHashMap<(Vec<i64>, usize), usize> = FxHashMap::default();
-        let mut entries: Vec<BTreeMap<usize, BTreeMap<i64, Rational>>> = Vec::new();
+        let mut entries: Vec<BTreeMap<usize, BTreeMap<Powers, Rational>>> = Vec::new();
         for image in images {
-            let mut column: BTreeMap<usize, BTreeMap<i64, Rational>> = BTreeMap::new();
+            let mut column: BTreeMap<usize, BTreeMap<Powers, Rational>> = BTreeMap::new();
             for term in image.terms() {
                 if !canonical(angles.iter().map(|v| term.exponent(*v))) {
                     continue;
                 }
-                let power = term.exponent(t);
+                let power = Powers {
+                    t: term.exponent(t),
+                    atoms: denominators
+                        .iter()
+                        .map(|(v, _)| term.exponent(*v))
+                        .collect(),
+                };
                 let mut key = term.exponents();
                 key[t.index()] = 0;
+                for (v, _) in denominators {
+                    key[v.index()] = 0;
+                }
                 let c = term.coeff();
                 for (part, x) in [c.re, c.im].into_iter().enumerate() {
                     if x.is_zero() {
@@ -787,26 +897,44 @@ impl PolyMatrix {
                     }
                     let n = row_of.len();
                     let row = *row_of.entry((key.clone(), part)).or_insert(n);
-                    *column.entry(row).or_default().entry(power).or_default() += &x;
+                    *column
+                        .entry(row)
+                        .or_default()
+                        .entry(power.clone())
+                        .or_default() += &x;
                 }
             }
             entries.push(column);
         }
         let rows = row_of.len();
         // Each row's entries made integers, times the lcm of the row's denominators, and
-        // polynomials, times `t^k` for its largest negative exponent `−k`.
+        // polynomials, times `t^k` for its largest negative exponent `−k` and `d^k` for each
+        // atom's (`1/d` to the power `k` at most).
         let mut lcm = vec![BigInt::one(); rows];
-        let mut lowest = vec![0_i64; rows];
+        let mut lowest = vec![
+            Powers {
+                t: 0,
+                atoms: vec![0; denominators.len()]
+            };
+            rows
+        ];
         for column in &entries {
             for (row, poly) in column {
                 for (power, x) in poly {
                     lcm[*row] = num_integer::Integer::lcm(&lcm[*row], &x.denom().to_bigint());
-                    lowest[*row] = lowest[*row].min(*power);
+                    lowest[*row].lower_to(power);
                 }
             }
         }
-        let shifted = |row: usize, power: i64| {
-            usize::try_from(power - lowest[row]).expect("no power below the row's lowest")
+        // `d^k` for each atom, formed once for each `k`.
+        let mut atom_powers: Vec<Vec<IntPoly>> =
+            vec![vec![IntPoly::from_i64(&[1])]; denominators.len()];
+        let mut power_of = |a: usize, k: usize| {
+            while atom_powers[a].len() <= k {
+                let next = atom_powers[a].last().expect("d^0").mul(&denominators[a].1);
+                atom_powers[a].push(next);
+            }
+            atom_powers[a][k].clone()
         };
         let columns = entries
             .into_iter()
@@ -814,13 +942,26 @@ impl PolyMatrix {
                 column
                     .into_iter()
                     .filter_map(|(row, poly)| {
-                        let degree = poly.keys().max().map_or(0, |&i| shifted(row, i));
-                        let mut coeffs = vec![BigInt::zero(); degree + 1];
-                        for (i, x) in poly {
+                        let mut sum: Vec<BigInt> = Vec::new();
+                        for (power, x) in poly {
                             let scaled = x * &Rational::from(lcm[row].clone());
-                            coeffs[shifted(row, i)] = scaled.numer().to_bigint();
+                            let shift = power.shifted(&lowest[row]);
+                            let mut coeffs = vec![BigInt::zero(); shift.t + 1];
+                            coeffs[shift.t] = scaled.numer().to_bigint();
+                            let mut term = IntPoly::new(coeffs);
+                            for (a, &k) in shift.atoms.iter().enumerate() {
+                                if k > 0 {
+                                    term = term.mul(&power_of(a, k));
+                                }
+                            }
+                            if sum.len() < term.coeffs().len() {
+                                sum.resize(term.coeffs().len(), BigInt::zero());
+                            }
+                            for (s, c) in sum.iter_mut().zip(term.coeffs()) {
+                                *s += c;
+                            }
                         }
-                        let p = IntPoly::new(coeffs);
+                        let p = IntPoly::new(sum);
                         (!p.is_zero()).then(|| (row, p.coeffs().to_vec()))
                     })
                     .collect()
@@ -878,6 +1019,43 @@ impl PolyMatrix {
         }
         minor
     }
+}
+
+/// The exponents of a term of an entry of [`PolyMatrix`] in the parameter `t` and in each
+/// atom of a declared denominator in `t` (`1/d(t)` to the power `−k` where `k < 0`).
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord)]
+struct Powers {
+    t: i64,
+    atoms: Vec<i64>,
+}
+
+impl Powers {
+    /// Each exponent lowered to `other`'s where that is lower: a row's lowest.
+    fn lower_to(&mut self, other: &Powers) {
+        self.t = self.t.min(other.t);
+        for (a, b) in self.atoms.iter_mut().zip(&other.atoms) {
+            *a = (*a).min(*b);
+        }
+    }
+
+    /// The exponents once the row is multiplied by `t^{−lowest.t} Π d^{−lowest.atoms}`: none
+    /// negative.
+    fn shifted(&self, lowest: &Powers) -> ShiftedPowers {
+        let up =
+            |p: i64, low: i64| usize::try_from(p - low).expect("no power below the row's lowest");
+        ShiftedPowers {
+            t: up(self.t, lowest.t),
+            atoms: (self.atoms.iter().zip(&lowest.atoms))
+                .map(|(&p, &low)| up(p, low))
+                .collect(),
+        }
+    }
+}
+
+/// [`Powers`] of a row made polynomial ([`Powers::shifted`]).
+struct ShiftedPowers {
+    t: usize,
+    atoms: Vec<usize>,
 }
 
 /// A block of the equations: its columns, its generic rank and the determinant of its
@@ -1350,6 +1528,7 @@ impl Residue for u64 {
 mod tests {
     use super::*;
     use crate::search::SearchSpace;
+    use trigpoly::VarsBuilder;
 
     /// The system of the Hamiltonian `h` in `x, y, p_x, p_y` and the `parameters`.
     fn planar(h: &str, parameters: &[&str]) -> System {
@@ -1575,6 +1754,89 @@ mod tests {
         let found = exceptional_values(&direct, &space(2, 2), direct.var("a")).unwrap();
         assert!(!found.determinants.zero_left_out);
         assert_eq!(values_of(&found), ["0", "1"]);
+    }
+
+    /// The plane with the parameter `a` and the declared `denominators` (in `a` alone).
+    fn planar_over(h: &str, denominators: &[&str]) -> System {
+        let mut builder = Vars::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .momentum("p_x")
+            .momentum("p_y")
+            .parameter("a");
+        for d in denominators {
+            builder = builder.denominator(d).unwrap();
+        }
+        let vars = builder.build().unwrap();
+        let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")]).unwrap();
+        System::new("test", space, Expr::parse(&vars, h).unwrap()).unwrap()
+    }
+
+    #[test]
+    fn oscillators_with_frequency_squares_one_and_one_over_a_plus_one_are_exceptional_at_a_zero_alone(
+    ) {
+        // 1/(a + 1) declared: each row times its power of a + 1; a = −1, where H has no
+        // value, is no candidate, and the generic value no root of it.
+        let system = planar_over("(p_x^2 + p_y^2)/2 + (x^2 + y^2/(a + 1))/2", &["a + 1"]);
+        let a = system.var("a");
+        let found = exceptional_values(&system, &space(2, 2), a).unwrap();
+        assert_eq!(values_of(&found), ["0"]);
+        let minus_one = Rational::from(-1);
+        assert!(found.spurious.iter().all(|r| *r != minus_one));
+        assert_ne!(found.determinants.generic_value, minus_one);
+        assert!(!found.determinants.zero_left_out);
+        let at_zero = &found.values[0].found;
+        assert!(at_zero
+            .basis
+            .iter()
+            .any(|i| i.expr().to_string() == "x p_y − y p_x"));
+        // The same oscillators with b = 1/(a + 1) itself: b = 1 is a = 0, and b = 0, where y
+        // is free, is no value of a.
+        let direct = planar("(p_x^2 + p_y^2)/2 + (x^2 + b*y^2)/2", &["b"]);
+        let by_b = exceptional_values(&direct, &space(2, 2), direct.var("b")).unwrap();
+        assert_eq!(values_of(&by_b), ["0", "1"]);
+        assert_eq!(by_b.values[1].found.basis.len(), at_zero.basis.len());
+        assert_eq!(by_b.generic.basis.len(), found.generic.basis.len());
+    }
+
+    #[test]
+    fn the_irrational_roots_of_a_declared_denominator_are_no_roots_left_to_examine() {
+        // Isotropic at a² − 2 = 1, a = ±√3: the determinants' irrational part is a² − 3
+        // alone, a² − 2 (no value of H) divided out of it.
+        let system = planar_over("(p_x^2 + p_y^2)/2 + (x^2 + y^2/(a^2 - 2))/2", &["a^2 - 2"]);
+        let found = exceptional_candidates(&system, &space(2, 2), system.var("a")).unwrap();
+        let told = &found.determinants;
+        assert_eq!(told.unexamined, IntPoly::from_i64(&[-3, 0, 1]));
+        let d = IntPoly::from_i64(&[-2, 0, 1]);
+        assert_eq!(told.ruled_out.factor.gcd(&d).degree(), Some(0));
+        assert!(told.denominator_roots_left_out.is_empty());
+    }
+
+    #[test]
+    fn a_parameter_in_a_declared_radical_or_in_a_denominator_beside_a_phase_variable_is_refused() {
+        let refused = |h: &str, declare: &dyn Fn(VarsBuilder) -> VarsBuilder| {
+            let builder = Vars::builder()
+                .coordinate("x")
+                .coordinate("y")
+                .momentum("p_x")
+                .momentum("p_y")
+                .parameter("a");
+            let vars = declare(builder).build().unwrap();
+            let space_of = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")]).unwrap();
+            let system = System::new("test", space_of, Expr::parse(&vars, h).unwrap()).unwrap();
+            exceptional_candidates(&system, &space(2, 2), system.var("a"))
+                .unwrap_err()
+                .to_string()
+        };
+        let radical = refused("(p_x^2 + p_y^2)/2 + r*x^2", &|b| b.radical("r", "a^2 + 1"));
+        assert!(radical.contains("a in a declared radical, r"), "{radical}");
+        let beside = refused("(p_x^2 + p_y^2)/2 + 1/(x - a*y)", &|b| {
+            b.denominator("x - a*y").unwrap()
+        });
+        assert!(
+            beside.contains("a declared denominator that holds a phase variable too"),
+            "{beside}"
+        );
     }
 
     #[test]
