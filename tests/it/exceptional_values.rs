@@ -867,16 +867,10 @@ fn a_parameter_in_a_declared_denominator_has_the_resonances_it_moves_found() {
         .collect();
     assert_eq!(dimensions(&found), by_i_shifted);
     assert_eq!(found["generic"]["dimension"], by_i["generic"]["dimension"]);
-    let text = normalize(&superint_ok(&[
-        "search",
+    let text = normalize(&superint_ok(&kappa_values(
         file,
-        "--find-values",
-        "kappa",
-        "--fix",
-        "M=1,I=1,omega=1",
-        "--when",
-        "p_theta = 1",
-    ]));
+        &["--when", "p_theta = 1"],
+    )));
     assert!(
         text.contains(
             "κ = −1, a root of the determinants, is no value: H divides by (κ + 1), which is \
@@ -884,6 +878,12 @@ fn a_parameter_in_a_declared_denominator_has_the_resonances_it_moves_found() {
         ),
         "{text}"
     );
+}
+
+/// `search FILE --find-values kappa` at `M = I = ω = 1`, then `extra`.
+fn kappa_values<'a>(file: &'a str, extra: &[&'a str]) -> Vec<&'a str> {
+    let find = ["search", file, "--find-values", "kappa"];
+    [&find[..], &["--fix", "M=1,I=1,omega=1"], extra].concat()
 }
 
 /// The gyroscopic rotor with `κ + 1` declared, which its `H` does not divide by: at
@@ -906,23 +906,8 @@ fn a_declared_denominator_that_h_does_not_divide_by_leaves_its_root_out_only_for
     );
     let file = file.to_str().unwrap();
     let find = |extra: &[&'static str]| {
-        let space = [
-            "--momenta-degree",
-            "2",
-            "--positions-degree",
-            "2",
-            "--trig-degree",
-            "2",
-        ];
-        let kappa = [
-            "search",
-            file,
-            "--find-values",
-            "kappa",
-            "--fix",
-            "M=1,I=1,omega=1",
-        ];
-        [&kappa[..], &space, extra].concat()
+        let space = ["--momenta-degree", "2", "--positions-degree", "2"];
+        kappa_values(file, &[&space[..], &["--trig-degree", "2"], extra].concat())
     };
     let run = |extra: &[&'static str]| superint_json(&find(extra))["exceptional_values"][0].clone();
     let whole = run(&["--denominators-degree", "0"]);

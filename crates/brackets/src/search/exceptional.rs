@@ -1745,15 +1745,17 @@ mod tests {
         assert!(found.spurious.iter().all(|r| !r.is_zero()));
         let at_one = &found.values[0].found;
         assert!(at_one.basis.len() > found.generic.basis.len());
-        assert!(at_one
-            .basis
-            .iter()
-            .any(|i| i.expr().to_string() == "x p_y − y p_x"));
+        assert!(holds_angular_momentum(at_one));
         // With a itself, a = 0 is one (y free there, p_y an integral) and no negative power.
         let direct = planar("(p_x^2 + p_y^2)/2 + (x^2 + a*y^2)/2", &["a"]);
         let found = exceptional_values(&direct, &space(2, 2), direct.var("a")).unwrap();
         assert!(!found.determinants.zero_left_out);
         assert_eq!(values_of(&found), ["0", "1"]);
+    }
+
+    /// Whether `x p_y − y p_x` is among the integrals `found`.
+    fn holds_angular_momentum(found: &SearchResult) -> bool {
+        (found.basis.iter()).any(|i| i.expr().to_string() == "x p_y − y p_x")
     }
 
     /// The plane with the parameter `a` and the declared `denominators` (in `a` alone).
@@ -1786,10 +1788,7 @@ mod tests {
         assert_ne!(found.determinants.generic_value, minus_one);
         assert!(!found.determinants.zero_left_out);
         let at_zero = &found.values[0].found;
-        assert!(at_zero
-            .basis
-            .iter()
-            .any(|i| i.expr().to_string() == "x p_y − y p_x"));
+        assert!(holds_angular_momentum(at_zero));
         // The same oscillators with b = 1/(a + 1) itself: b = 1 is a = 0, and b = 0, where y
         // is free, is no value of a.
         let direct = planar("(p_x^2 + p_y^2)/2 + (x^2 + b*y^2)/2", &["b"]);
