@@ -826,7 +826,7 @@ fn denominators_in(
         .map(|(v, d)| {
             let at = fix_parameters(d, parameters)?;
             let vars = at.vars();
-            if !at.is_real() || at.terms().into_iter().any(|term| term.exponent(t) < 0) {
+            if !at.is_real() {
                 return Err(EngineError::Invalid(format!(
                     "the search for the exceptional values of {} does not take the declared \
                      denominator {}, whose coefficients are not real",
@@ -836,7 +836,7 @@ fn denominators_in(
             }
             let mut coeffs: Vec<Rational> = Vec::new();
             for term in at.terms() {
-                let k = usize::try_from(term.exponent(t)).expect("no negative power");
+                let k = usize::try_from(term.exponent(t)).expect("a denominator is a polynomial");
                 if coeffs.len() <= k {
                     coeffs.resize(k + 1, Rational::zero());
                 }
