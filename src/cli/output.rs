@@ -1,10 +1,12 @@
-//! Options shared by every subcommand: `--format`, `--no-timings` and `--full-expressions`.
+//! Options shared by every subcommand: `--format`, `--no-timings`, `--full-expressions` and
+//! `--angles`.
 
 use std::io::{self, Write};
 
 use clap::{Args, ValueEnum};
 use superint::render::{printable, Format, Options, SHOWN_MONOMIALS};
 use superint::system_file::{FileError, LoadedSystem, Warning};
+use trigpoly::Angles;
 
 /// `--format` values.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, ValueEnum)]
@@ -32,6 +34,26 @@ impl From<FormatArg> for Format {
     }
 }
 
+/// `--angles` values: how an angle's part prints ([`Angles`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, ValueEnum)]
+pub enum AnglesArg {
+    /// Multiple angles, as the paper writes them: A cos 2θ + B sin 2θ.
+    #[default]
+    Harmonics,
+    /// Powers of cos θ and sin θ, the normal form claims are decided in (sin²θ replaced by
+    /// 1 − cos²θ): A cos²θ + B cos θ sin θ.
+    Powers,
+}
+
+impl From<AnglesArg> for Angles {
+    fn from(a: AnglesArg) -> Angles {
+        match a {
+            AnglesArg::Harmonics => Angles::Harmonics,
+            AnglesArg::Powers => Angles::Powers,
+        }
+    }
+}
+
 /// The output arguments, accepted before or after the subcommand.
 #[derive(Debug, Args)]
 pub struct OutputArgs {
@@ -46,6 +68,11 @@ pub struct OutputArgs {
     /// also `--full-residuals`).
     #[arg(long, global = true, alias = "full-residuals")]
     full_expressions: bool,
+    /// How an angle's part prints in every format: harmonics (cos 2θ, sin 2θ, …, the
+    /// default) or powers (cos²θ, cos θ sin θ, …, the normal form). Either reads back to the
+    /// same element.
+    #[arg(long, value_enum, default_value_t = AnglesArg::Harmonics, global = true)]
+    angles: AnglesArg,
 }
 
 /// How to print, as plain data.
@@ -58,7 +85,10 @@ pub struct Output {
 }
 
 impl OutputArgs {
+    /// The settings, once the form of the angles is made the process's ([`Angles::set_current`]:
+    /// every printer, in every thread, writes it).
     pub fn settings(&self) -> Output {
+        Angles::from(self.angles).set_current();
         Output {
             format: self.format.into(),
             options: Options::default()

@@ -798,7 +798,8 @@ fn latex_it_equals_is_a_relation() {
     for expected in [
         r" &\mathrel{\text{it equals}} \left(\omega p_{y} + M \omega^{2} x\right) \cos\theta",
         r" &\mathrel{\text{it equals}} \bigl(2 \omega p_{x} p_{y} + 2 M \omega^{2} x p_{x}",
-        r" &\mathrel{\text{it equals}} -\omega p_{y} - M \omega^{2} x + \bigl(",
+        // −A + 2A cos²θ + 2B cos θ sin θ = A cos 2θ + B sin 2θ.
+        r" &\mathrel{\text{it equals}} \bigl(\omega p_{y} + M \omega^{2} x\bigr) \cos 2\theta",
     ] {
         assert!(paper.contains(expected), "{expected} in\n{paper}");
     }

@@ -1830,7 +1830,7 @@ fn quadrupole_rotor_conserves_j_and_refutes_the_orbital_momentum() {
              [body-frame proved]",
             "{Z, H} = iω Z − 2ε e^{2iθ} (x − iy) [ladder proved]",
             "{L, H} = 0 [false-orbital-momentum refuted, as expected] \
-             residual lhs − rhs = −4εxy + 8εxy cos²θ + (−4εx² + 4εy²) cos θ sin θ = −T",
+             residual lhs − rhs = 4εxy cos 2θ + (−2εx² + 2εy²) sin 2θ = −T",
             "{p_θ, H} = −T [false-wrong-sign-torque refuted, as expected]",
             "{H_osc + V, H} = 0 [false-oscillator-energy refuted, as expected]",
             "{Z e^{−iθ}, H} = 0 at p_θ = Iω [false-resonant refuted, as expected]",
@@ -6500,9 +6500,10 @@ fn fd_rotor_resonant_integrals_found_and_their_algebra() {
             "= −Q_{1,1}",
             // The parts of `W e^{−3iθ}`, though the real and imaginary parts' families,
             // which declare no eigenvalue, come before it in index order.
-            "Φ5 = (−3 p_x − 6M ω₋ y) cos θ + (p_y − 2M ω₋ x) sin θ + (4 p_x + 8M ω₋ y) cos³θ \
-             + (−4 p_y + 8M ω₋ x) cos²θ sin θ = R_{1,3}",
-            "+ (4 p_x + 8M ω₋ y) cos²θ sin θ = −S_{1,3}",
+            // cos³θ = (3 cos θ + cos 3θ)/4, cos²θ sin θ = (sin θ + sin 3θ)/4: the parts of
+            // order 1 cancel.
+            "Φ5 = (p_x + 2M ω₋ y) cos 3θ + (−p_y + 2M ω₋ x) sin 3θ = R_{1,3}",
+            "Φ6 = (p_y − 2M ω₋ x) cos 3θ + (p_x + 2M ω₋ y) sin 3θ = −S_{1,3}",
         ],
     );
     assert_eq!(
@@ -6716,8 +6717,8 @@ fn iso3_rotor_resonant_integrals_found_and_their_algebra() {
         &[
             "Dimension of the space of integrals: 392.",
             "the generated ones span 386 of the 392 dimensions",
-            "Φ5 = −p_z + 2 p_z cos²θ + 2Mωz cos θ sin θ = R_{1,2}",
-            "Φ9 = −p_x + 2 p_x cos²θ + 2Mωx cos θ sin θ = P_{1,2}",
+            "Φ5 = p_z cos 2θ + Mωz sin 2θ = R_{1,2}",
+            "Φ9 = p_x cos 2θ + Mωx sin 2θ = P_{1,2}",
             "= −Q_{1,2}",
             "7 claims: 7 proved, 0 refuted",
         ],

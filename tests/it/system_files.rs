@@ -2882,7 +2882,7 @@ fn check_json_is_one_object_per_claim() {
     assert!(c16["residual"]
         .as_str()
         .expect("a residual")
-        .contains("cos(theta)"));
+        .contains("cos(3*theta)"));
     let sw = run(
         &[
             "check",
@@ -3141,7 +3141,27 @@ fn expand_prints_the_normal_form() {
         ),
         "{out}"
     );
-    assert!(out.contains("\n    sin²θ   = 1 − cos²θ\n"), "{out}");
+    assert!(out.contains("\n    sin²θ   = 1/2 − (cos 2θ)/2\n"), "{out}");
+    // P_{1,2} = (p_x − Mωy) cos 2θ + (p_y + Mωx) sin 2θ by default, and with `--angles
+    // powers` in the normal form's powers: A cos 2θ + B sin 2θ = −A + 2A cos²θ + 2B cos θ sin θ.
+    let harmonics = run(&["expand", f, "P_1_2", "--no-timings"], 0);
+    let shown = "\n    P_{1,2} = (p_x − Mωy) cos 2θ + (p_y + Mωx) sin 2θ\n";
+    assert!(harmonics.contains(shown), "{harmonics}");
+    let powers = run(
+        &["expand", f, "P_1_2", "--no-timings", "--angles", "powers"],
+        0,
+    );
+    let shown = "\n    P_{1,2} = −p_x + Mωy + (2 p_x − 2Mωy) cos²θ + (2 p_y + 2Mωx) cos θ sin θ\n";
+    assert!(powers.contains(shown), "{powers}");
+    let latex = run(
+        &[
+            "expand", f, "P_1_2", "--format", "latex", "--angles", "powers",
+        ],
+        0,
+    );
+    assert!(latex.contains(r"\cos^{2}\theta"), "{latex}");
+    let latex = run(&["expand", f, "P_1_2", "--format", "latex"], 0);
+    assert!(latex.contains(r"\right) \cos 2\theta + "), "{latex}");
     let casimir = "4*G1^2 + G2^2 + omega^2*L^2 - (F1 - F2)^2";
     let wrong = "4*G1^2 + G2^2 + omega^2*L^2 - F1^2";
     let v: Value =
@@ -5994,8 +6014,9 @@ fn a_claims_echo_sets_a_sine_or_cosine_apart_from_a_factor_after_it() {
     for (echo, expanded) in [
         ("(−sin θ) p_θ/I", "−(p_θ sin θ)/I"),
         ("(cos θ) x", "x cos θ"),
-        ("(cos²θ) x p_x", "x p_x cos²θ"),
-        ("(cos θ) (sin θ) x", "x cos θ sin θ"),
+        // cos²θ = (1 + cos 2θ)/2, cos θ sin θ = (sin 2θ)/2.
+        ("(cos²θ) x p_x", "x p_x/2 + (x p_x cos 2θ)/2"),
+        ("(cos θ) (sin θ) x", "(x sin 2θ)/2"),
     ] {
         let o = superint_in(&dir, &["expand", "rotor.toml", "--", echo]);
         let out = text(&o.stdout);

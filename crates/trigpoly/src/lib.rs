@@ -71,8 +71,8 @@ pub use poly::{
     ReducedRadical, Term, TrigMonomial,
 };
 pub use print::{
-    differential_latex, is_differential, is_differential_sign, render_number, superscript,
-    Factored, Style, UnknownStyle, DIFFERENTIALS,
+    differential_latex, is_differential, is_differential_sign, render_number, superscript, Angles,
+    Factored, Style, UnknownAngles, UnknownStyle, WithAngles, DIFFERENTIALS,
 };
 pub use syntax::{Excerpt, ParseCause, ParseError, Span};
 pub use varset::{

@@ -15,6 +15,7 @@
 
 use std::collections::hash_map::{Entry, HashMap};
 use std::fmt;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use crate::number::{Coefficient, GaussianRational, Magnitude, Rational};
 use crate::poly::{CosSinTerm, Poly, TrigMonomial};
@@ -97,14 +98,117 @@ impl std::str::FromStr for Style {
 #[error("unknown style '{0}' (expected unicode or text, latex or ascii)")]
 pub struct UnknownStyle(pub String);
 
-impl<C: Coefficient> Poly<C> {
-    /// The element in a given notation.
-    pub fn render(&self, style: Style) -> String {
-        render_terms(self.vars(), &self.cos_sin_terms(), style)
+/// How the printers write an angle's part: in multiple angles (`A cos 2θ + B sin 2θ`, as the
+/// paper does) or in powers of `cos θ` and `sin θ` (`A cos²θ + B cos θ sin θ`, the normal form
+/// the engine decides in). Only the text differs: either form parses back to the same element.
+///
+/// [`Poly::render`], [`Poly::to_string`] and the other printers write the process's form
+/// ([`Angles::current`], harmonics unless [`Angles::set_current`] chose powers, as the command
+/// line's `--angles powers` does); [`Poly::render_with`] and [`Poly::with_angles`] name one.
+///
+/// ```
+/// use trigpoly::{Angles, Expr, Style, Vars};
+/// let vars = Vars::builder().coordinate("x").angle("theta").build().unwrap();
+/// let f = Expr::parse(&vars, "x*cos(theta)^2").unwrap();
+/// assert_eq!(f.render_with(Style::Unicode, Angles::Harmonics), "x/2 + (x cos 2θ)/2");
+/// assert_eq!(f.with_angles(Angles::Powers).to_string(), "x cos²θ");
+/// assert_eq!(f.render_with(Style::Ascii, Angles::Harmonics), "x/2 + x*cos(2*theta)/2");
+/// assert_eq!("powers".parse(), Ok(Angles::Powers));
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Angles {
+    /// Multiple angles: `cos kθ`, `sin kθ`, each angle's part grouped by harmonic.
+    #[default]
+    Harmonics,
+    /// Powers: `cos^a θ sin^b θ` with `b ≤ 1` (`sin²θ` written `1 − cos²θ`).
+    Powers,
+}
+
+/// Whether the process prints angles in [`Angles::Powers`] ([`Angles::current`]).
+static POWERS: AtomicBool = AtomicBool::new(false);
+
+impl Angles {
+    /// Both forms, the default first.
+    pub const ALL: [Angles; 2] = [Angles::Harmonics, Angles::Powers];
+
+    /// The form's name: `harmonics` or `powers`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Angles::Harmonics => "harmonics",
+            Angles::Powers => "powers",
+        }
     }
 
-    /// The element in several notations, its cos/sin normal form ([`Poly::cos_sin_terms`])
-    /// computed once for all of them.
+    /// The form the printers of this process write where none is named.
+    pub fn current() -> Angles {
+        match POWERS.load(Ordering::Relaxed) {
+            true => Angles::Powers,
+            false => Angles::Harmonics,
+        }
+    }
+
+    /// Makes this form the one the printers of this process write where none is named (a
+    /// program's setting, as `--angles` is the command line's: every thread prints in it).
+    pub fn set_current(self) {
+        POWERS.store(self == Angles::Powers, Ordering::Relaxed);
+    }
+
+    /// The terms of `p` in this form, in printing order.
+    fn terms<C: Coefficient>(self, p: &Poly<C>) -> Vec<CosSinTerm> {
+        match self {
+            Angles::Harmonics => p.harmonic_terms(),
+            Angles::Powers => p.cos_sin_terms(),
+        }
+    }
+}
+
+/// A form by its name ([`Angles::name`]).
+impl std::str::FromStr for Angles {
+    type Err = UnknownAngles;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        (Angles::ALL.into_iter())
+            .find(|a| a.name() == s)
+            .ok_or_else(|| UnknownAngles(s.to_string()))
+    }
+}
+
+/// A name that is no [`Angles`]'s: the name.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("unknown form of angles '{0}' (expected harmonics or powers)")]
+pub struct UnknownAngles(pub String);
+
+/// An element shown as text with its angles in a named form ([`Poly::with_angles`]).
+#[derive(Debug)]
+pub struct WithAngles<'a, C: Coefficient> {
+    poly: &'a Poly<C>,
+    angles: Angles,
+}
+
+impl<C: Coefficient> fmt::Display for WithAngles<'_, C> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.poly.render_with(Style::Unicode, self.angles))
+    }
+}
+
+impl<C: Coefficient> Poly<C> {
+    /// The element in a given notation, its angles in the process's form ([`Angles::current`]).
+    pub fn render(&self, style: Style) -> String {
+        self.render_with(style, Angles::current())
+    }
+
+    /// The element in a given notation with its angles in a given form.
+    pub fn render_with(&self, style: Style, angles: Angles) -> String {
+        render_terms(self.vars(), &angles.terms(self), style, angles)
+    }
+
+    /// The element as text ([`fmt::Display`]) with its angles in a given form.
+    pub fn with_angles(&self, angles: Angles) -> WithAngles<'_, C> {
+        WithAngles { poly: self, angles }
+    }
+
+    /// The element in several notations, its terms in the process's form of the angles
+    /// ([`Poly::harmonic_terms`] or [`Poly::cos_sin_terms`]) computed once for all of them.
     ///
     /// ```
     /// use trigpoly::{Poly, Rational, Style, Vars};
@@ -114,8 +218,9 @@ impl<C: Coefficient> Poly<C> {
     /// assert_eq!((text, latex), (h.to_string(), h.to_latex()));
     /// ```
     pub fn render_each<const N: usize>(&self, styles: [Style; N]) -> [String; N] {
-        let terms = self.cos_sin_terms();
-        styles.map(|style| render_terms(self.vars(), &terms, style))
+        let angles = Angles::current();
+        let terms = angles.terms(self);
+        styles.map(|style| render_terms(self.vars(), &terms, style, angles))
     }
 
     /// The element's text for a message: in full when it is short, else only its size (`a
@@ -179,14 +284,19 @@ impl<C: Coefficient> fmt::Display for Poly<C> {
 
 /// Renders a sum of normal-form terms, grouping terms by their trigonometric factor:
 /// `(p_x − Mωy) cos θ + (p_y + Mωx) sin θ`.
-pub(crate) fn render_terms(vars: &VarSet, terms: &[CosSinTerm], style: Style) -> String {
+pub(crate) fn render_terms(
+    vars: &VarSet,
+    terms: &[CosSinTerm],
+    style: Style,
+    angles: Angles,
+) -> String {
     if terms.is_empty() {
         return "0".into();
     }
-    if let Some(fractions) = render_fractions(vars, terms, style) {
+    if let Some(fractions) = render_fractions(vars, terms, style, angles) {
         return fractions;
     }
-    let names = Names::new(vars, terms, style);
+    let names = Names::new(vars, terms, style, angles);
     let mut out = String::new();
     let mut k = 0;
     while k < terms.len() {
@@ -226,7 +336,12 @@ pub(crate) fn render_terms(vars: &VarSet, terms: &[CosSinTerm], style: Style) ->
 /// written as one fraction: `3g(p_x + p_y)/(x − y)²`, `p_x(p_x − p_y)/(x − y)²`, the factors
 /// and the rational content they share in front; the other terms as they are, in order of
 /// first appearance. `None` when no two terms share a denominator (then nothing changes).
-fn render_fractions(vars: &VarSet, terms: &[CosSinTerm], style: Style) -> Option<String> {
+fn render_fractions(
+    vars: &VarSet,
+    terms: &[CosSinTerm],
+    style: Style,
+    angles: Angles,
+) -> Option<String> {
     vars.denominators().next()?;
     let is_atom: Vec<bool> = vars
         .vars()
@@ -256,7 +371,7 @@ fn render_fractions(vars: &VarSet, terms: &[CosSinTerm], style: Style) -> Option
     if groups.len() == terms.len() {
         return None;
     }
-    let names = Names::new(vars, terms, style);
+    let names = Names::new(vars, terms, style, angles);
     let mut out = String::new();
     for group in groups {
         if let [t] = group[..] {
@@ -264,7 +379,7 @@ fn render_fractions(vars: &VarSet, terms: &[CosSinTerm], style: Style) -> Option
             continue;
         }
         let (outer, numerator) = fraction(&group, &is_atom);
-        let inner = render_terms(vars, &numerator, style);
+        let inner = render_terms(vars, &numerator, style, angles);
         let inner = Inner {
             text: &inner,
             terms: numerator.len(),
@@ -472,6 +587,8 @@ struct Names {
     order: Vec<usize>,
     /// The angles' indices, in declaration order.
     angles: Vec<usize>,
+    /// The form of the terms' trigonometric parts ([`CosSinTerm::trig`]): powers, or harmonics.
+    angle_form: Angles,
     /// The declared names of several letters that one-letter names of the element, side by
     /// side, could spell (`xy` where `x` and `y` are written), in text; most often none, and
     /// then no term need look at its runs ([`Names::apart_in_runs`]).
@@ -479,7 +596,7 @@ struct Names {
 }
 
 impl Names {
-    fn new(vars: &VarSet, terms: &[CosSinTerm], style: Style) -> Self {
+    fn new(vars: &VarSet, terms: &[CosSinTerm], style: Style, angle_form: Angles) -> Self {
         let names = vars
             .vars()
             .map(|v| {
@@ -513,6 +630,7 @@ impl Names {
                 .collect(),
             order: order.iter().map(|v| v.index()).collect(),
             angles: vars.angles().map(|v| v.index()).collect(),
+            angle_form,
             spellable: match style {
                 Style::Unicode => spellable(vars, terms),
                 _ => Vec::new(),
@@ -593,7 +711,8 @@ fn spellable(vars: &VarSet, terms: &[CosSinTerm]) -> Vec<String> {
         .collect()
 }
 
-/// The factors `cos^a θ sin^b θ` of a trigonometric monomial, each wide, into `product`.
+/// The factors of a trigonometric monomial, each wide, into `product`: `cos^a θ sin^b θ`, or
+/// in harmonics `cos kθ` or `sin kθ` per angle ([`Poly::harmonic_terms`]).
 fn write_trig_factors(out: &mut String, product: &mut Product, names: &Names, trig: &TrigMonomial) {
     let style = product.style;
     for (&j, &(a, b)) in names.angles.iter().zip(&trig.powers) {
@@ -603,6 +722,10 @@ fn write_trig_factors(out: &mut String, product: &mut Product, names: &Names, tr
                 continue;
             }
             product.next(out, true);
+            if names.angle_form == Angles::Harmonics && e > 1 {
+                write_multiple_angle(out, fun, e, name, style);
+                continue;
+            }
             // `cos²θ`, `cos θ`, `\cos^{2}\theta`; `cos(theta)^2`.
             if style == Style::Ascii {
                 write_display(out, format_args!("{fun}({name})"));
@@ -621,6 +744,15 @@ fn write_trig_factors(out: &mut String, product: &mut Product, names: &Names, tr
             }
             out.push_str(name);
         }
+    }
+}
+
+/// `cos kθ` for `k ≥ 2`: `cos 2θ`, `\cos 2\theta`; `cos(2*theta)`, which parses back.
+fn write_multiple_angle(out: &mut String, fun: &str, k: u32, name: &str, style: Style) {
+    match style {
+        Style::Ascii => write_display(out, format_args!("{fun}({k}*{name})")),
+        Style::Latex => write_display(out, format_args!("\\{fun} {k}{name}")),
+        Style::Unicode => write_display(out, format_args!("{fun} {k}{name}")),
     }
 }
 

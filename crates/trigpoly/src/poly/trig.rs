@@ -199,6 +199,30 @@ impl<C: Coefficient> Poly<C> {
     /// coefficients, so the sums are taken over Z\[i\] (no gcd per addition) and the content
     /// multiplies each surviving sum once.
     pub fn cos_sin_terms(&self) -> Vec<CosSinTerm> {
+        self.trig_terms(euler_powers)
+    }
+
+    /// The terms in the harmonic form `c · m · Π cos kθ` or `sin kθ` (`k ≥ 0` per angle, one
+    /// function each), as the paper writes an angle's part (`A cos 2θ + B sin 2θ`), grouped
+    /// and ordered as [`Poly::cos_sin_terms`]: the constant part first, then `cos θ`, `sin θ`,
+    /// `cos 2θ`, `sin 2θ`, …. Each term's [`CosSinTerm::trig`] holds `(k, 0)` for `cos kθ` and
+    /// `(0, k)` for `sin kθ` (`(0, 0)` for an angle absent): `e^{ikθ} = cos kθ + i sin kθ`,
+    /// read off the stored exponents, so nothing is linearised.
+    ///
+    /// ```
+    /// use trigpoly::{Expr, Vars};
+    /// let vars = Vars::builder().angle("theta").build().unwrap();
+    /// let f = Expr::parse(&vars, "cos(theta)^2").unwrap();
+    /// let powers: Vec<_> = f.harmonic_terms().iter().map(|t| t.trig.powers[0]).collect();
+    /// assert_eq!(powers, [(0, 0), (2, 0)]); // 1/2 + 1/2 cos 2θ
+    /// ```
+    pub fn harmonic_terms(&self) -> Vec<CosSinTerm> {
+        self.trig_terms(harmonic_parts)
+    }
+
+    /// The terms with each angle's `e^{ikθ}` written by the table that `tables` makes for the
+    /// multiples `k` that occur (sorted, each once): `(cos part, sin part, coefficient)`.
+    fn trig_terms(&self, tables: fn(&[i64]) -> TrigTables) -> Vec<CosSinTerm> {
         let angles: Vec<usize> = self.vars.angles().map(|v| v.index()).collect();
         let n = self.vars.len();
         let layout = self.layout();
@@ -207,7 +231,7 @@ impl<C: Coefficient> Poly<C> {
             .collect();
         multiples.sort_unstable();
         multiples.dedup();
-        let tables = euler_powers(&multiples);
+        let tables = tables(&multiples);
         // The sums are keyed by two numbers: the monomial in the variables (the angles'
         // exponents cleared once converted) and the trigonometric monomial (`(cos, sin)`
         // powers per angle converted), each numbered once: a hash of two words per sum, where
@@ -433,12 +457,34 @@ fn sum_at<'s>(
     &mut sums[slot as usize]
 }
 
+/// For each multiple `k`, the terms `(cos part, sin part, coefficient)` that `e^{ikθ}` is
+/// written as, in one form or the other of the angles.
+type TrigTables = FxHashMap<i64, Vec<(u32, u32, GaussianInteger)>>;
+
+/// `e^{ikθ} = cos kθ + i sin kθ` (`cos |k|θ − i sin |k|θ` for `k < 0`) as harmonics, for each
+/// `k` of `multiples`: `(|k|, 0, 1)` and `(0, |k|, ±i)`; `1` alone for `k = 0`.
+fn harmonic_parts(multiples: &[i64]) -> TrigTables {
+    let one = GaussianInteger::from_integer(Integer::ONE);
+    let i = one.mul_i();
+    (multiples.iter())
+        .map(|&k| {
+            let n = k.unsigned_abs() as u32;
+            let table = match k {
+                0 => vec![(0, 0, one.clone())],
+                _ if k > 0 => vec![(n, 0, one.clone()), (0, n, i.clone())],
+                _ => vec![(n, 0, one.clone()), (0, n, i.conj())],
+            };
+            (k, table)
+        })
+        .collect()
+}
+
 /// `(cos θ + i sin θ)^k` (for `k < 0`, `(cos θ − i sin θ)^{|k|}`) in normal form, as
 /// `(cos power, sin power, coefficient)`, for each `k` of `multiples`: the powers are formed
 /// one from the next, `(A + sB)(c + is) = (Ac + i(1 − c²)B) + s(iA + cB)`, up to the largest
 /// `|k|`, each kept where asked for. (Formed from 1 for each `k`, `cos^1000 φ` took 24 s to
 /// print.)
-fn euler_powers(multiples: &[i64]) -> FxHashMap<i64, Vec<(u32, u32, GaussianInteger)>> {
+fn euler_powers(multiples: &[i64]) -> TrigTables {
     let zero = GaussianInteger::default();
     let largest = multiples
         .iter()

@@ -12,7 +12,7 @@
 
 use std::fmt;
 
-use super::{render_terms, write_term, Inner, Names, Style};
+use super::{render_terms, write_term, Angles, Inner, Names, Style};
 use crate::number::{Coefficient, GaussianRational, Rational};
 use crate::poly::{CosSinTerm, Poly, PrintOrder, TrigMonomial};
 use crate::varset::{VarKind, Vars};
@@ -38,14 +38,16 @@ pub struct Factored {
     vars: Vars,
     /// The factor: a rational times powers of variables (no angle).
     factor: CosSinTerm,
-    /// What is left, in the cos/sin normal form.
+    /// What is left, its angles in the form of `angles`.
     rest: Vec<CosSinTerm>,
+    /// The form the angles of `rest` are in.
+    angles: Angles,
 }
 
 impl Factored {
     /// `terms` (a cos/sin normal form) as factor times rest, where the factor is not `±1` and
     /// the rest has no denominator.
-    fn of(vars: &Vars, terms: &[CosSinTerm]) -> Option<Factored> {
+    fn of(vars: &Vars, terms: &[CosSinTerm], angles: Angles) -> Option<Factored> {
         let first = terms.first().filter(|_| terms.len() > 1)?;
         let width = first.exps.len();
         // Each variable at its least power, where every term has it on the same side of the bar:
@@ -112,10 +114,11 @@ impl Factored {
             vars: vars.clone(),
             factor,
             rest,
+            angles,
         })
     }
 
-    /// The number of terms of what is left, in the cos/sin normal form.
+    /// The number of terms of what is left, its angles in the form it prints in.
     pub fn terms(&self) -> usize {
         self.rest.len()
     }
@@ -133,13 +136,13 @@ impl Factored {
 
     /// `front(rest)`, then `back` after the parentheses where it is given (`−(2ω − 3Ω) Q`).
     fn written(&self, front: &CosSinTerm, back: Option<&CosSinTerm>, style: Style) -> String {
-        let rest = render_terms(&self.vars, &self.rest, style);
+        let rest = render_terms(&self.vars, &self.rest, style, self.angles);
         let every: Vec<CosSinTerm> = std::iter::once(front)
             .chain(back)
             .chain(&self.rest)
             .cloned()
             .collect();
-        let names = Names::new(&self.vars, &every, style);
+        let names = Names::new(&self.vars, &every, style, self.angles);
         let mut out = String::new();
         let inner = Inner {
             text: &rest,
@@ -223,6 +226,7 @@ impl<C: Coefficient> Poly<C> {
     /// ([`Factored`]): `None` for a single term, and where the terms share no factor but `±1`
     /// or the rest would have a denominator.
     pub fn factored(&self) -> Option<Factored> {
-        Factored::of(self.vars(), &self.cos_sin_terms())
+        let angles = Angles::current();
+        Factored::of(self.vars(), &angles.terms(self), angles)
     }
 }

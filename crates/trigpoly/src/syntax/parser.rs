@@ -855,6 +855,15 @@ impl Parser<'_> {
         let call = if self.tok.tok == Tok::LParen {
             self.call(name, span)?
         } else {
+            // `cos 2θ`, `\cos 2\theta`: a multiple of an angle, as the printers write one.
+            let multiple = match &self.tok.tok {
+                Tok::Int(n) if power.is_none() => {
+                    let k = Expr::new(ExprKind::Integer(n.clone()), self.tok.span);
+                    self.bump()?;
+                    Some(k)
+                }
+                _ => None,
+            };
             let Token {
                 tok: Tok::Name(arg),
                 span: arg_span,
@@ -878,7 +887,11 @@ impl Parser<'_> {
             if matches!(self.tok.tok, Tok::Sup { .. } | Tok::Caret) {
                 return Err(self.power_of_bare_angle(span, arg_span, power.is_none()));
             }
-            let arg = Expr::new(ExprKind::Name(arg), arg_span);
+            let mut arg = Expr::new(ExprKind::Name(arg), arg_span);
+            if let Some(k) = multiple {
+                let whole = k.span.to(arg_span);
+                arg = Expr::new(ExprKind::Mul(Box::new(k), Box::new(arg)), whole);
+            }
             Expr::new(ExprKind::Call(name, span, vec![arg]), span.to(arg_span))
         };
         self.height = 2;

@@ -1,7 +1,7 @@
 //! Printing like the paper: exact unicode, LaTeX and ASCII strings.
 
 use pretty_assertions::assert_eq;
-use trigpoly::{GaussianRational, Poly, Style, Vars};
+use trigpoly::{Angles, GaussianRational, Poly, Style, Vars};
 
 use crate::common::{p, phase_space, plane_with, G, Q};
 
@@ -24,6 +24,96 @@ fn prints(vars: &Vars, src: &str, [unicode, latex, ascii]: [&str; 3]) {
         f,
         "the ASCII form {ascii:?} parses back"
     );
+}
+
+/// Asserts the three renderings of `src` with its angles in powers ([`Angles::Powers`], the
+/// normal form) and that the ASCII one parses back.
+fn prints_powers(vars: &Vars, src: &str, [unicode, latex, ascii]: [&str; 3]) {
+    let f: G = p(vars, src);
+    let shown = Style::ALL.map(|style| f.render_with(style, Angles::Powers));
+    assert_eq!(shown, [unicode, latex, ascii], "{src}");
+    assert_eq!(f.with_angles(Angles::Powers).to_string(), unicode);
+    assert_eq!(
+        p::<GaussianRational>(vars, ascii),
+        f,
+        "the ASCII form {ascii:?} parses back"
+    );
+}
+
+/// The printers write each angle's part in multiple angles by default, as the paper does:
+/// `cos^a θ sin^b θ` as a sum of `cos kθ` and `sin kθ` (`k ≤ a + b`), each expected form worked
+/// by hand (`cos²θ = (1 + cos 2θ)/2`, `cos³θ = (3 cos θ + cos 3θ)/4`, `cos²θ sin θ =
+/// (sin θ + sin 3θ)/4`, `sin³θ = (3 sin θ − sin 3θ)/4`, `cos θ sin θ = sin 2θ/2`), the terms
+/// grouped by harmonic; every form parses back, the text one too (`cos 2θ`).
+#[test]
+fn harmonics_linearise_powers_of_cos_and_sin() {
+    let vars = plane();
+    let cases = [
+        (
+            "cos(theta)^2",
+            [
+                "1/2 + (cos 2θ)/2",
+                r"\frac{1}{2} + \frac{\cos 2\theta}{2}",
+                "1/2 + cos(2*theta)/2",
+            ],
+        ),
+        (
+            "cos(theta)^3",
+            [
+                "(3 cos θ)/4 + (cos 3θ)/4",
+                r"\frac{3 \cos\theta}{4} + \frac{\cos 3\theta}{4}",
+                "3*cos(theta)/4 + cos(3*theta)/4",
+            ],
+        ),
+        (
+            "cos(theta)^2*sin(theta)",
+            [
+                "(sin θ)/4 + (sin 3θ)/4",
+                r"\frac{\sin\theta}{4} + \frac{\sin 3\theta}{4}",
+                "sin(theta)/4 + sin(3*theta)/4",
+            ],
+        ),
+        (
+            "sin(theta)^3",
+            [
+                "(3 sin θ)/4 − (sin 3θ)/4",
+                r"\frac{3 \sin\theta}{4} - \frac{\sin 3\theta}{4}",
+                "3*sin(theta)/4 - sin(3*theta)/4",
+            ],
+        ),
+        (
+            "2*x*cos(theta)^2 - x + 2*y*cos(theta)*sin(theta)",
+            [
+                "x cos 2θ + y sin 2θ",
+                r"x \cos 2\theta + y \sin 2\theta",
+                "x*cos(2*theta) + y*sin(2*theta)",
+            ],
+        ),
+        (
+            "x*exp(-2*i*theta)",
+            [
+                "x cos 2θ − ix sin 2θ",
+                r"x \cos 2\theta - i x \sin 2\theta",
+                "x*cos(2*theta) - i*x*sin(2*theta)",
+            ],
+        ),
+    ];
+    for (src, shown) in cases {
+        prints(&vars, src, shown);
+        let f: G = p(&vars, src);
+        assert_eq!(
+            p::<GaussianRational>(&vars, shown[0]),
+            f,
+            "{} reads back",
+            shown[0]
+        );
+    }
+    // Two angles: each one's harmonics multiplied, cos θ cos φ = (cos(θ + φ) + cos(θ − φ))/2
+    // left as it is.
+    let vars = phase_space();
+    let f: G = p(&vars, "cos(theta)^2*cos(phi)");
+    assert_eq!(f.to_string(), "(cos φ)/2 + (cos 2θ cos φ)/2");
+    assert_eq!(p::<GaussianRational>(&vars, &f.to_string()), f);
 }
 
 /// A coefficient with both parts is one factor in parentheses: `i` alone for `±i`, and a
@@ -272,7 +362,7 @@ fn latin_angles_are_spaced_from_cos_and_sin_in_latex() {
         .angle("theta")
         .build()
         .unwrap();
-    prints(
+    prints_powers(
         &vars,
         "cos(a)*sin(t) + cos(a)^2*sin(theta)",
         [
@@ -286,18 +376,18 @@ fn latin_angles_are_spaced_from_cos_and_sin_in_latex() {
 #[test]
 fn trigonometric_normal_form_a_of_cos_plus_sin_times_b_of_cos() {
     let vars = plane();
-    prints(
+    prints_powers(
         &vars,
         "cos(theta)^2",
         ["cos²θ", r"\cos^{2}\theta", "cos(theta)^2"],
     );
     // sin²θ → 1 − cos²θ, sin³θ → sin θ − cos²θ sin θ.
-    prints(
+    prints_powers(
         &vars,
         "sin(theta)^2",
         ["1 − cos²θ", r"1 - \cos^{2}\theta", "1 - cos(theta)^2"],
     );
-    prints(
+    prints_powers(
         &vars,
         "sin(theta)^3",
         [
@@ -306,7 +396,7 @@ fn trigonometric_normal_form_a_of_cos_plus_sin_times_b_of_cos() {
             "sin(theta) - cos(theta)^2*sin(theta)",
         ],
     );
-    prints(
+    prints_powers(
         &vars,
         "cos(2*theta)",
         [
@@ -315,7 +405,7 @@ fn trigonometric_normal_form_a_of_cos_plus_sin_times_b_of_cos() {
             "-1 + 2*cos(theta)^2",
         ],
     );
-    prints(
+    prints_powers(
         &vars,
         "x*exp(i*theta)",
         [
@@ -324,7 +414,7 @@ fn trigonometric_normal_form_a_of_cos_plus_sin_times_b_of_cos() {
             "x*cos(theta) + i*x*sin(theta)",
         ],
     );
-    prints(
+    prints_powers(
         &vars,
         "x*cos(theta) + y*cos(theta) + 1",
         [
@@ -334,7 +424,7 @@ fn trigonometric_normal_form_a_of_cos_plus_sin_times_b_of_cos() {
         ],
     );
     let two = phase_space();
-    prints(
+    prints_powers(
         &two,
         "cos(theta)*sin(phi)",
         [
@@ -532,7 +622,7 @@ fn high_trigonometric_powers_with_long_coefficients_print_exactly() {
     }
     // p_x⁹ cos⁹θ has the coefficient 12345678901⁹/11, and heads the group of cos⁹θ.
     let lead = num_bigint::BigInt::from(12345678901u64).pow(9);
-    let text = f.to_ascii();
+    let text = f.render_with(Style::Ascii, Angles::Powers);
     assert!(text.contains(&format!("({lead}*p_x^9/11 + ")), "{text}");
 }
 
@@ -782,7 +872,7 @@ fn high_trigonometric_powers_print_as_single_terms() {
         ("cos(phi)^400", "cos⁴⁰⁰φ"),
     ] {
         let f: G = p(&vars, src);
-        assert_eq!(f.to_string(), shown, "{src}");
+        assert_eq!(f.with_angles(Angles::Powers).to_string(), shown, "{src}");
         assert_eq!(p::<GaussianRational>(&vars, &f.to_ascii()), f, "{src}");
     }
     // A sum whose terms cancel in the conversion of the second angle only.

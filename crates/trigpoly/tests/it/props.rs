@@ -6,8 +6,8 @@ use num_rational::BigRational;
 use proptest::prelude::*;
 use proptest::test_runner::Config;
 use trigpoly::{
-    AlgebraError, ExactDivisor, GaussianRational, Integer, IntegerAcc, IntegerView, Limits, Point,
-    Poly, Rational, Style, VarKind, Vars,
+    AlgebraError, Angles, ExactDivisor, GaussianRational, Integer, IntegerAcc, IntegerView, Limits,
+    Point, Poly, Rational, Style, VarKind, Vars,
 };
 
 use crate::common::{phase_space, var, G, Q};
@@ -865,7 +865,7 @@ proptest! {
             .expect("a monomial");
         let g = &f * &factor;
         if let Some(factored) = g.factored() {
-            prop_assert!(factored.terms() == g.cos_sin_terms().len());
+            prop_assert!(factored.terms() == g.harmonic_terms().len());
             for text in [factored.render(Style::Ascii), factored.to_string()] {
                 match G::parse(&vars, &text) {
                     Ok(back) => prop_assert_eq!(&back, &g, "{}", text),
@@ -884,6 +884,26 @@ proptest! {
             Ok(back) => prop_assert_eq!(back, f, "{}", text),
             Err(e) => prop_assert!(false, "{}", e.render(&text)),
         }
+    }
+
+    /// Either form of the angles, harmonics (`cos 2θ`, `cos(2*theta)`) and powers (`cos²θ`,
+    /// `cos(theta)^2`), in ASCII and in unicode text, parses back to the same element: an
+    /// independent check of the printer's conversion, which the parser does not share. The
+    /// harmonic form has no higher power of a cosine or a sine than the first.
+    #[test]
+    fn both_forms_of_the_angles_parse_back(f in gpoly(9)) {
+        let vars = phase_space();
+        for angles in Angles::ALL {
+            for style in [Style::Ascii, Style::Unicode] {
+                let text = f.render_with(style, angles);
+                match G::parse(&vars, &text) {
+                    Ok(back) => prop_assert_eq!(back, f.clone(), "{}", text),
+                    Err(e) => prop_assert!(false, "{}", e.render(&text)),
+                }
+            }
+        }
+        let text = f.render_with(Style::Ascii, Angles::Harmonics);
+        prop_assert!(!text.contains("theta)^") && !text.contains("phi)^"), "{}", text);
     }
 
     /// Where one-letter names side by side spell other names (`xy`, `yx`, `ab`, and `xi` with

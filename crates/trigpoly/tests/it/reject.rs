@@ -800,11 +800,11 @@ fn cases() -> Vec<Case> {
         case(
             Qi,
             "M/(x^2*cos(phi)^2)",
-            "cannot divide by x² cos²φ: cos and sin of an angle are sums of exponentials, which \
+            "cannot divide by x²/2 + (x² cos 2φ)/2: cos and sin of an angle are sums of exponentials, which \
              are not invertible here; only division by a nonzero constant, a single term in the \
              other variables, or exp(i*k*angle) is exact",
             (1, 3),
-            "line 1, column 3: cannot divide by x² cos²φ: cos and sin of an angle are sums of \
+            "line 1, column 3: cannot divide by x²/2 + (x² cos 2φ)/2: cos and sin of an angle are sums of \
              exponentials, which are not invertible here; only division by a nonzero constant, a \
              single term in the other variables, or exp(i*k*angle) is exact\n  \
              M/(x^2*cos(phi)^2)\n    ^^^^^^^^^^^^^^^^",
