@@ -21,10 +21,10 @@ Examples:
 Each expression may use the file's variables, parameters, functions, family instances (K_2_3),
 brackets {F, G}, re, im and conj; it is printed in the normal form every claim is decided in,
 its angles' part in multiple angles as the paper writes it (A + B cos 2θ + C sin 2θ), or with
---angles powers in powers of cos θ and sin θ (sin²θ replaced by 1 − cos²θ). With --system, the expressions are in the
-built-in system's variables and functions (its resonant functions P11, Q23, …, also written
-P_1_1). Built-in systems (--system): harmonic, gravity, anisotropic-3-5, anisotropic-1-2,
-planar-i, planar-ii.";
+--angles powers in powers of cos θ and sin θ (sin²θ replaced by 1 − cos²θ). With --system,
+the expressions are in the built-in system's variables and functions (its resonant functions
+P11, Q23, …, also written P_1_1). Built-in systems (--system): harmonic, gravity,
+anisotropic-3-5, anisotropic-1-2, planar-i, planar-ii.";
 
 /// Arguments of `superint expand`.
 #[derive(Debug, Args)]
