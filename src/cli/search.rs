@@ -877,9 +877,11 @@ fn find_values(
     };
     // Each candidate searched once, as its report shows it: under `--when 'C = VALUE'` (with
     // `a`'s own after), or with C fixed there, as `--fix` does, on a level set, which takes no
-    // condition, and where a declared denominator holds C, which a search does not take from
-    // a condition. The engine keeps those with more integrals, and takes their ranks once,
-    // which their reports show.
+    // condition, and where a declared denominator holds C: a search refuses a condition that
+    // makes it zero even where nothing divides by it (`--denominators-degree 0`, an `H` that
+    // does not), and such a value can have more integrals (`κ = −1` of the gyroscopic rotor
+    // with `κ + 1` declared), which `--fix` searches at. The engine keeps those with more
+    // integrals, and takes their ranks once, which their reports show.
     let in_denominator =
         (system.space().denominator_atoms().iter()).any(|(_, d)| d.contains(parameter));
     let at = |value: &trigpoly::Rational| -> anyhow::Result<SearchOptions> {
