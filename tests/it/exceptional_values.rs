@@ -1316,3 +1316,46 @@ fn a_rank_past_the_bordering_minors_limit_is_a_lower_bound_and_still_decides() {
         assert!(text.contains(said), "{said}\n{text}");
     }
 }
+
+/// The oscillator `(p_x² + p_y²)/2 + x²/2 + 3y²/(κ + 1)` with `κ + 1` declared, and `extra`
+/// declared after it, as a scratch file.
+fn oscillator_over_kappa_plus_one(name: &str, extra: &str) -> std::path::PathBuf {
+    scratch_text(
+        "exceptional-values",
+        name,
+        &format!(
+            "name = \"t\"\nhamiltonian = \"(p_x^2 + p_y^2)/2 + x^2/2 + 3*y^2/(kappa + 1)\"\n\
+             [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"kappa\", \"m\"]\n\
+             denominators = [\"kappa + 1\"{extra}]\n"
+        ),
+    )
+}
+
+/// `--find-values m` under `κ = m − 1`, which gives `1/(κ + 1)` the value `1/m`: `H` holds `m`
+/// through the condition, and `m = 0`, where it has no value, is no candidate. The frequency
+/// of `y` is `√(6/m)` against `x`'s 1, so at degree 3 the resonances `1 : 3, 1 : 2, 1 : 1,
+/// 2 : 1, 3 : 1` are `m = 6q²/p²`: `2/3, 3/2, 6, 24, 54`, by hand.
+#[test]
+fn find_values_under_a_condition_that_gives_a_denominator_the_parameter_takes_it() {
+    let file = oscillator_over_kappa_plus_one("oscillator-kappa-m-minus-one.toml", "");
+    let find = [
+        "search",
+        file.to_str().unwrap(),
+        "--find-values",
+        "m",
+        "--when",
+        "kappa = m - 1",
+        "--momenta-degree",
+        "3",
+        "--positions-degree",
+        "3",
+    ];
+    let found = superint_json(&find)["exceptional_values"][0].clone();
+    assert_eq!(values_found(&found), ["2/3", "3/2", "6", "24", "54"]);
+    assert_eq!(found["zero_left_out"], true);
+    let text = normalize(&superint_ok(&find));
+    assert!(
+        text.contains("m = 0, a root of the determinants, is no value: H, with a negative power"),
+        "{text}"
+    );
+}

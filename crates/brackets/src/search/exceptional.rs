@@ -640,8 +640,8 @@ pub fn exceptional_candidates(
     // With a negative power of `t` in H, `t = 0` is no value of H: not a candidate; nor is a
     // root of a declared denominator in `t` that H or the space's functions divide by (a
     // search there has no value for them), irrational ones divided out of the rest.
-    let no_value_at_zero =
-        (system.hamiltonian().terms().into_iter()).any(|term| term.exponent(parameter) < 0);
+    let searched = searched_hamiltonian(system, options)?;
+    let no_value_at_zero = (searched.terms().into_iter()).any(|term| term.exponent(parameter) < 0);
     let zero_left_out = no_value_at_zero && roots.iter().any(Rational::is_zero);
     if no_value_at_zero {
         roots.retain(|r| !r.is_zero());
@@ -729,6 +729,16 @@ fn problem_with_parameter_kept(
     Ok(problem)
 }
 
+/// `H` as the search takes it: under the condition's [`Condition::substitution`], whose values
+/// may hold the parameter, or divide by it or by a declared denominator in it (`κ = m − 1`
+/// gives the atom of `κ + 1` the value `1/m`).
+fn searched_hamiltonian(system: &System, options: &SearchOptions) -> Result<Expr, EngineError> {
+    match &options.condition {
+        Some(c) => Ok(system.hamiltonian().subst_many(&c.substitution())?),
+        None => Ok(system.hamiltonian().clone()),
+    }
+}
+
 /// Refuses what [`exceptional_values`] does not take.
 fn refuse(system: &System, options: &SearchOptions, parameter: Var) -> Result<(), EngineError> {
     let vars = system.vars();
@@ -737,16 +747,24 @@ fn refuse(system: &System, options: &SearchOptions, parameter: Var) -> Result<()
             "only a parameter's exceptional values are found".into(),
         ));
     }
+    if let Some(c) = &options.condition {
+        c.values_denominators()?;
+    }
     let name = vars.variable(parameter).name();
     let space = system.space();
-    let symbol_holds = |symbols: &[(Var, Expr)]| {
-        (symbols.iter()).any(|(v, e)| e.contains(parameter) && system.hamiltonian().contains(*v))
+    // Held by H as written (a condition that sets the parameter is refused below, for that),
+    // or by H under the condition.
+    let holds = |h: &Expr| {
+        let symbol_holds = |symbols: &[(Var, Expr)]| {
+            (symbols.iter()).any(|(v, e)| e.contains(parameter) && h.contains(*v))
+        };
+        h.contains(parameter)
+            || symbol_holds(space.denominator_atoms())
+            || symbol_holds(space.radicals())
     };
-    let held = system.hamiltonian().contains(parameter)
-        || symbol_holds(space.denominator_atoms())
-        || symbol_holds(space.radicals());
+    let held = holds(system.hamiltonian()) || holds(&searched_hamiltonian(system, options)?);
     let refusal = if !held {
-        Some(format!("H does not hold {name}"))
+        Some(format!("{name}, which H does not hold"))
     } else if !options.symbolic.is_empty() {
         Some("parameters kept symbolic: the others are fixed".into())
     } else if let Some(level) = options
