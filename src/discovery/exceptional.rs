@@ -172,24 +172,22 @@ pub fn exceptional_values_report(
     }
     // As for 0: each root of a declared denominator in the parameter that was a root of a
     // determinant, said where it was left out.
-    for (root, atom) in &told.denominator_roots_left_out {
-        let d = vars.variable(*atom).unicode();
-        entries.push(Entry::Text(
-            match system.hamiltonian().low_degree(*atom) < Some(0) {
-                true => format!(
-                    "`{t} = {}`, a root of the determinants, is no value: H divides by `{d}`, \
-                     which is zero there (each equation was multiplied by the power of `{d}` \
-                     that makes it a polynomial, which changes its solutions at no other value).",
-                    shown(root)
-                ),
-                false => format!(
-                    "`{t} = {}`, a root of the determinants, is not searched at: the space's \
-                     functions divide by `{d}`, which is zero there (--denominators-degree 0 \
-                     leaves them out).",
-                    shown(root)
-                ),
-            },
-        ));
+    for left_out in &told.denominator_roots_left_out {
+        let (root, d) = (&left_out.root, vars.variable(left_out.atom).unicode());
+        entries.push(Entry::Text(match left_out.divides_h {
+            true => format!(
+                "`{t} = {}`, a root of the determinants, is no value: H divides by `{d}`, \
+                 which is zero there (each equation was multiplied by the power of `{d}` \
+                 that makes it a polynomial, which changes its solutions at no other value).",
+                shown(root)
+            ),
+            false => format!(
+                "`{t} = {}`, a root of the determinants, is not searched at: the space's \
+                 functions divide by `{d}`, which is zero there (--denominators-degree 0 \
+                 leaves them out).",
+                shown(root)
+            ),
+        }));
     }
     let unexamined = told.unexamined_in(vars);
     let real_roots = unexamined
@@ -283,7 +281,7 @@ pub fn exceptional_values_report(
             )
             .with_denominator_roots_left_out(
                 (told.denominator_roots_left_out.iter())
-                    .map(|(r, _)| r.to_string())
+                    .map(|r| r.root.to_string())
                     .collect(),
             )
             .with_ruled_out(ruled_out_real.map(|real| RuledOutFacts {

@@ -1359,3 +1359,59 @@ fn find_values_under_a_condition_that_gives_a_denominator_the_parameter_takes_it
         "{text}"
     );
 }
+
+/// `--find-values m` under `κ = m`, with `m + 1` declared too: the condition gives `1/(κ + 1)`
+/// the value `1/(m + 1)`, so `H` divides by `m + 1` and `m = −1` is no value, even at
+/// `--denominators-degree 0`, where the space has no powers of it. The frequency of `y` is
+/// `√(6/(m + 1))`, so at degree 3 the values are `m = 6q²/p² − 1`: `−1/3, 1/2, 5, 23, 53`, by
+/// hand.
+#[test]
+fn find_values_leaves_out_the_root_of_a_denominator_the_condition_makes_h_divide_by() {
+    let file = oscillator_over_kappa_plus_one("oscillator-kappa-m.toml", ", \"m + 1\"");
+    let find = |degree: &'static str| {
+        superint_ok(&[
+            "search",
+            file.to_str().unwrap(),
+            "--find-values",
+            "m",
+            "--when",
+            "kappa = m",
+            "--momenta-degree",
+            "3",
+            "--positions-degree",
+            "3",
+            "--denominators-degree",
+            degree,
+            "--format",
+            "json",
+        ])
+    };
+    for degree in ["0", "2"] {
+        let json: serde_json::Value = serde_json::from_str(&find(degree)).unwrap();
+        let found = &json["exceptional_values"][0];
+        assert_eq!(values_found(found), ["-1/3", "1/2", "5", "23", "53"]);
+        assert_eq!(
+            found["denominator_roots_left_out"],
+            serde_json::json!(["-1"])
+        );
+    }
+    let text = superint_ok(&[
+        "search",
+        file.to_str().unwrap(),
+        "--find-values",
+        "m",
+        "--when",
+        "kappa = m",
+        "--momenta-degree",
+        "3",
+        "--positions-degree",
+        "3",
+    ]);
+    assert!(
+        normalize(&text).contains(
+            "m = −1, a root of the determinants, is no value: H divides by (m + 1), which is \
+             zero there"
+        ),
+        "{text}"
+    );
+}

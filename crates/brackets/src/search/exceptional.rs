@@ -159,11 +159,22 @@ pub struct Determinants {
     /// power of the parameter and has no value there.
     pub zero_left_out: bool,
     /// The roots of a determinant left out as no candidates because a declared denominator in
-    /// the parameter (at the other parameters' fixed values) is zero there, increasing, each
-    /// with that denominator's atom: `H`, where it divides by it, has no value there, nor, where
-    /// the space has its powers ([`super::SearchSpace::denominators_degree`]), the space's
-    /// functions.
-    pub denominator_roots_left_out: Vec<(Rational, Var)>,
+    /// the parameter (at the other parameters' fixed values) is zero there, increasing.
+    pub denominator_roots_left_out: Vec<DenominatorRoot>,
+}
+
+/// A root of a determinant left out as no candidate: a declared denominator in the parameter
+/// is zero there, and `H`, where it divides by it, has no value there, nor, where the space has
+/// its powers ([`super::SearchSpace::denominators_degree`]), the space's functions.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct DenominatorRoot {
+    /// The root.
+    pub root: Rational,
+    /// The denominator's atom.
+    pub atom: Var,
+    /// Whether `H`, under the condition ([`Condition::substitution`]), divides by it; if not,
+    /// the space's functions alone do.
+    pub divides_h: bool,
 }
 
 impl Determinants {
@@ -646,16 +657,21 @@ pub fn exceptional_candidates(
     if no_value_at_zero {
         roots.retain(|r| !r.is_zero());
     }
-    let divided_by = |atom: Var| {
-        options.space.denominators_degree > 0 || system.hamiltonian().low_degree(atom) < Some(0)
-    };
+    let divided_by =
+        |atom: Var| options.space.denominators_degree > 0 || searched.low_degree(atom) < Some(0);
     let poles: Vec<&(Var, IntPoly)> = (denominators.iter())
         .filter(|(v, _)| divided_by(*v))
         .collect();
     let zero_of = |r: &Rational| poles.iter().find(|(_, d)| d.vanishes_at(r));
     let no_value = |r: &Rational| zero_of(r).is_some();
-    let mut denominator_roots_left_out: Vec<(Rational, Var)> = (roots.iter())
-        .filter_map(|r| zero_of(r).map(|(v, _)| (r.clone(), *v)))
+    let mut denominator_roots_left_out: Vec<DenominatorRoot> = (roots.iter())
+        .filter_map(|r| {
+            zero_of(r).map(|(v, _)| DenominatorRoot {
+                root: r.clone(),
+                atom: *v,
+                divides_h: searched.low_degree(*v) < Some(0),
+            })
+        })
         .collect();
     roots.retain(|r| !no_value(r));
     for (_, d) in &poles {
@@ -666,8 +682,8 @@ pub fn exceptional_candidates(
     }
     roots.sort();
     roots.dedup();
-    denominator_roots_left_out.sort_by(|a, b| a.0.cmp(&b.0));
-    denominator_roots_left_out.dedup_by(|a, b| a.0 == b.0);
+    denominator_roots_left_out.sort_by(|a, b| a.root.cmp(&b.root));
+    denominator_roots_left_out.dedup_by(|a, b| a.root == b.root);
     let generic_value = (1..)
         .map(|k| Rational::new(2 * k + 5, 1))
         .find(|v| !no_value(v) && determinants.iter().all(|d| !d.vanishes_at(v)))

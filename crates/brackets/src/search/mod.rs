@@ -108,8 +108,8 @@ mod tests;
 
 pub use exceptional::{
     basis_rank, exceptional_candidates, exceptional_values, generation_decided,
-    level_set_graph_variable, BasisGenerators, Candidates, Determinants, ExceptionalValue,
-    ExceptionalValues, RuledOut, MAX_RANK_MINORS, SEARCH_RANK_MINORS,
+    level_set_graph_variable, BasisGenerators, Candidates, DenominatorRoot, Determinants,
+    ExceptionalValue, ExceptionalValues, RuledOut, MAX_RANK_MINORS, SEARCH_RANK_MINORS,
 };
 pub use level_set::{BesideLevelSet, LevelProof, LevelReduction, LevelSet};
 pub use options::{SearchOptions, SearchSpace, DEFAULT_MAX_MINOR, DEFAULT_MAX_PRODUCTS};
