@@ -1331,6 +1331,13 @@ fn oscillator_over_kappa_plus_one(name: &str, extra: &str) -> std::path::PathBuf
     )
 }
 
+/// `search FILE --find-values m --when WHEN` at momenta and positions degree 3, then `extra`.
+fn m_values<'a>(file: &'a str, when: &'a str, extra: &[&'a str]) -> Vec<&'a str> {
+    let find = ["search", file, "--find-values", "m", "--when", when];
+    let degrees = ["--momenta-degree", "3", "--positions-degree", "3"];
+    [&find[..], &degrees, extra].concat()
+}
+
 /// `--find-values m` under `κ = m − 1`, which gives `1/(κ + 1)` the value `1/m`: `H` holds `m`
 /// through the condition, and `m = 0`, where it has no value, is no candidate. The frequency
 /// of `y` is `√(6/m)` against `x`'s 1, so at degree 3 the resonances `1 : 3, 1 : 2, 1 : 1,
@@ -1338,18 +1345,7 @@ fn oscillator_over_kappa_plus_one(name: &str, extra: &str) -> std::path::PathBuf
 #[test]
 fn find_values_under_a_condition_that_gives_a_denominator_the_parameter_takes_it() {
     let file = oscillator_over_kappa_plus_one("oscillator-kappa-m-minus-one.toml", "");
-    let find = [
-        "search",
-        file.to_str().unwrap(),
-        "--find-values",
-        "m",
-        "--when",
-        "kappa = m - 1",
-        "--momenta-degree",
-        "3",
-        "--positions-degree",
-        "3",
-    ];
+    let find = m_values(file.to_str().unwrap(), "kappa = m - 1", &[]);
     let found = superint_json(&find)["exceptional_values"][0].clone();
     assert_eq!(values_found(&found), ["2/3", "3/2", "6", "24", "54"]);
     assert_eq!(found["zero_left_out"], true);
@@ -1368,47 +1364,19 @@ fn find_values_under_a_condition_that_gives_a_denominator_the_parameter_takes_it
 #[test]
 fn find_values_leaves_out_the_root_of_a_denominator_the_condition_makes_h_divide_by() {
     let file = oscillator_over_kappa_plus_one("oscillator-kappa-m.toml", ", \"m + 1\"");
-    let find = |degree: &'static str| {
-        superint_ok(&[
-            "search",
-            file.to_str().unwrap(),
-            "--find-values",
-            "m",
-            "--when",
-            "kappa = m",
-            "--momenta-degree",
-            "3",
-            "--positions-degree",
-            "3",
-            "--denominators-degree",
-            degree,
-            "--format",
-            "json",
-        ])
-    };
+    let file = file.to_str().unwrap();
     for degree in ["0", "2"] {
-        let json: serde_json::Value = serde_json::from_str(&find(degree)).unwrap();
-        let found = &json["exceptional_values"][0];
-        assert_eq!(values_found(found), ["-1/3", "1/2", "5", "23", "53"]);
+        let find = m_values(file, "kappa = m", &["--denominators-degree", degree]);
+        let found = superint_json(&find)["exceptional_values"][0].clone();
+        assert_eq!(values_found(&found), ["-1/3", "1/2", "5", "23", "53"]);
         assert_eq!(
             found["denominator_roots_left_out"],
             serde_json::json!(["-1"])
         );
     }
-    let text = superint_ok(&[
-        "search",
-        file.to_str().unwrap(),
-        "--find-values",
-        "m",
-        "--when",
-        "kappa = m",
-        "--momenta-degree",
-        "3",
-        "--positions-degree",
-        "3",
-    ]);
+    let text = normalize(&superint_ok(&m_values(file, "kappa = m", &[])));
     assert!(
-        normalize(&text).contains(
+        text.contains(
             "m = −1, a root of the determinants, is no value: H divides by (m + 1), which is \
              zero there"
         ),
