@@ -870,6 +870,13 @@ impl Parser<'_> {
             } = self.bump()?
             else {
                 let at = self.prev.unwrap_or(span);
+                if let Some(k) = &multiple {
+                    let written = &self.src[span.start..k.span.end];
+                    return Err(ParseError::new(
+                        at,
+                        format!("expected an angle after '{written}', as in {name} 2θ"),
+                    ));
+                }
                 let hint = match &self.src[at.start..at.end] {
                     "^" => format!(
                         "; a power of {name} is written {name}²θ or {name}(theta)^2, not \
@@ -885,7 +892,11 @@ impl Parser<'_> {
             // `cos θ²` could be (cos θ)² or cos(θ²), and `cos²θ^3` (cos²θ)³ or cos²(θ³), as
             // LaTeX reads `\cos^2\theta^3`: neither is guessed.
             if matches!(self.tok.tok, Tok::Sup { .. } | Tok::Caret) {
-                return Err(self.power_of_bare_angle(span, arg_span, power.is_none()));
+                // `sin 2θ^2`: the multiple is part of the angle that the power may raise, and
+                // the square is not advised as `sin²2θ`, which reads as no multiple.
+                let angle = multiple.as_ref().map_or(arg_span, |k| k.span.to(arg_span));
+                let unpowered = power.is_none() && multiple.is_none();
+                return Err(self.power_of_bare_angle(span, angle, unpowered));
             }
             let mut arg = Expr::new(ExprKind::Name(arg), arg_span);
             if let Some(k) = multiple {
@@ -911,11 +922,11 @@ impl Parser<'_> {
         self.superscript_already(second, &self.quote(function), set, ONE_GROUP)
     }
 
-    /// The error for a power of the angle at `angle`, written without parentheses after the
-    /// function whose name is at `name`, or after a power of it: `sin²θ^3` could be
-    /// `(sin²θ)³` or `sin²(θ³)`, as LaTeX reads `\sin^2\theta^3`, and `sin θ³` `(sin θ)³` or
-    /// `sin(θ³)`; the message writes both readings in the source's own spelling
-    /// (`(\sin^{2}\theta)^{3}`), but for the square of a function not raised, `unpowered`,
+    /// The error for a power of the angle at `angle` (with its multiple, `2θ`), written without
+    /// parentheses after the function whose name is at `name`, or after a power of it:
+    /// `sin²θ^3` could be `(sin²θ)³` or `sin²(θ³)`, as LaTeX reads `\sin^2\theta^3`, and
+    /// `sin θ³` `(sin θ)³` or `sin(θ³)`; the message writes both readings in the source's own
+    /// spelling (`(\sin^{2}\theta)^{3}`), but for the square of a function not raised, `unpowered`,
     /// which it writes `sin²θ` or `sin(θ)^2`, or where the function or its angle is written in
     /// LaTeX, as written, `\sin^{2}\theta` or `\sin(\theta)^{2}`. A missing exponent,
     /// `sin²θ^`, is refused as after any other base ([`Self::exponent_after_caret`]).

@@ -1339,3 +1339,50 @@ fn a_declared_re_with_two_arguments_is_no_misspelled_part() {
         format!("unknown function 'Sin' {known}; did you mean 'sin'?")
     );
 }
+
+/// A multiple of an angle written without parentheses, `cos 2θ`, as the printers write one,
+/// reads as `cos(2θ)`; what it cannot be read as is refused naming the multiple: a power after
+/// it (`sin 2θ^2` is not the square of `sin θ`, which the message for `sin θ^2` advises), and a
+/// multiple that is not one integer (`cos 2/3θ`).
+#[test]
+fn a_multiple_angle_without_parentheses_is_read_or_refused_as_written() {
+    let vars = phase_space();
+    let read = |src: &str| Poly::<GaussianRational>::parse(&vars, src);
+    for src in ["cos 2θ", "cos 2 theta", "\\cos 2\\theta", "cos 2 θ"] {
+        assert_eq!(read(src), read("cos(2*theta)"), "{src}");
+    }
+    let refused = [
+        (
+            "sin 2θ^2",
+            "'sin 2θ' followed by a power is ambiguous: write (sin 2θ)^2 for a power of sin 2θ, \
+             or sin(2θ^2) for sin of 2θ^2",
+            (1, 5),
+        ),
+        (
+            "x + cos 2 theta³",
+            "'cos 2 theta' followed by a power is ambiguous: write (cos 2 theta)³ for a power of \
+             cos 2 theta, or cos(2 theta³) for cos of 2 theta³",
+            (1, 9),
+        ),
+        (
+            "cos 2/3θ",
+            "expected an angle after 'cos 2', as in cos 2θ",
+            (1, 6),
+        ),
+        (
+            "sin 2(θ)",
+            "expected an angle after 'sin 2', as in sin 2θ",
+            (1, 6),
+        ),
+    ];
+    for (src, message, line_col) in refused {
+        let err = read(src).expect_err(src);
+        assert_eq!(
+            (err.message().to_string(), err.line_col(src)),
+            (message.to_string(), line_col),
+            "{src}"
+        );
+    }
+    // The power the message writes first parses, to the square of `sin 2θ`.
+    assert_eq!(read("(sin 2θ)^2"), read("sin(2*theta)^2"));
+}
