@@ -332,14 +332,15 @@ fn claim_rows(c: &ClaimResult, names: &Names, column: usize) -> Vec<String> {
     }
     if let (ClaimKind::Nonvanishing, Some(w)) = (c.kind, &c.witness) {
         // A term and the `+` before it are two columns wide at least (as the text's witness).
-        if w.len() <= 3 * CLAIM_ROW / 2 && visual_width(&w.render(Style::Latex)) <= 3 * CLAIM_ROW {
+        let terms = w.printed_terms();
+        if terms <= 3 * CLAIM_ROW / 2 && visual_width(&w.render(Style::Latex)) <= 3 * CLAIM_ROW {
             // A relation, as `=` is: spaced from what follows, and a leading minus a sign
             // (`\text{it equals}` ran into a parenthesis and set `-` as a binary minus).
             rows.extend(long_rows("", r"\mathrel{\text{it equals}}", w, CLAIM_ROW));
         } else {
             rows.push(format!(
                 r"&\text{{it is a nonzero sum of {}}}",
-                counted(w.len(), "term")
+                counted(terms, "term")
             ));
         }
     }

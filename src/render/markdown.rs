@@ -182,17 +182,16 @@ fn claim(c: &ClaimResult) -> String {
             ));
         }
     }
-    match (c.kind, &c.witness) {
-        (ClaimKind::Nonvanishing, Some(w)) if w.len() <= SHOWN_MONOMIALS => {
-            line.push_str(&format!(" (it equals {})", code(&w.to_string())));
-        }
-        (ClaimKind::Nonvanishing, Some(w)) => {
-            line.push_str(&format!(
+    if let (ClaimKind::Nonvanishing, Some(w)) = (c.kind, &c.witness) {
+        match w.printed_terms() {
+            terms if terms <= SHOWN_MONOMIALS => {
+                line.push_str(&format!(" (it equals {})", code(&w.to_string())));
+            }
+            terms => line.push_str(&format!(
                 " (it is a nonzero sum of {})",
-                counted(w.len(), "term")
-            ));
+                counted(terms, "term")
+            )),
         }
-        _ => {}
     }
     // A note's formulas are code, as LaTeX sets them in math: `proved for every `A, B`, at
     // `C = 2``.

@@ -505,13 +505,14 @@ fn claim(out: &mut Vec<String>, c: &ClaimResult) {
     if let (ClaimKind::Nonvanishing, Some(w)) = (c.kind, &c.witness) {
         // A term and the ` + ` before it take four columns at least: a witness of more terms
         // than that allows is not rendered to be measured.
-        let line = (w.len() <= 3 * WRAP / 4).then(|| format!("      it equals {w}"));
+        let terms = w.printed_terms();
+        let line = (terms <= 3 * WRAP / 4).then(|| format!("      it equals {w}"));
         if let Some(line) = line.filter(|line| width(line) <= 3 * WRAP) {
             out.extend(wrap(&line, WRAP, "        "));
         } else {
             out.push(format!(
                 "      it is a nonzero sum of {}",
-                counted(w.len(), "term")
+                counted(terms, "term")
             ));
         }
     }
@@ -833,6 +834,34 @@ mod tests {
             ))),
             "{text}"
         );
+    }
+
+    /// A nonvanishing claim's witness is measured by the terms it prints as: `(x³⁷ + x³⁶ + … +
+    /// x) cos θ` is 37 terms (74 monomials, `e^{±iθ}`) and prints whole; `(x + … + x²⁰⁰)
+    /// cos θ` is said to be a nonzero sum of 200 terms, not of its 400 monomials.
+    #[test]
+    fn a_witness_is_counted_by_its_printed_terms() {
+        let vars = trigpoly::Vars::builder()
+            .coordinate("x")
+            .angle("theta")
+            .build()
+            .unwrap();
+        let witness = |n: usize| {
+            let sum = (1..=n).map(|k| format!("x^{k}")).collect::<Vec<_>>();
+            trigpoly::Expr::parse(&vars, &format!("({})*cos(theta)", sum.join(" + "))).unwrap()
+        };
+        let lines = |w: trigpoly::Expr| {
+            let mut c = ClaimResult::derived("nonzero", "w ≠ 0", true, None);
+            c.kind = ClaimKind::Nonvanishing;
+            c.witness = Some(w);
+            let mut out = Vec::new();
+            claim(&mut out, &c);
+            out.join("\n")
+        };
+        let short = lines(witness(37));
+        assert!(short.contains("it equals (x³⁷ + x³⁶ + x³⁵"), "{short}");
+        let long = lines(witness(200));
+        assert!(long.contains("it is a nonzero sum of 200 terms"), "{long}");
     }
 
     /// A long sum breaks before its signs, not inside a monomial (`x² p_y⁴`), and not inside

@@ -202,6 +202,14 @@ impl<C: Coefficient> Poly<C> {
         render_terms(self.vars(), &angles.terms(self), style, angles)
     }
 
+    /// The number of terms the element prints as, its angles in the process's form
+    /// ([`Angles::current`]): fewer than its monomials ([`Poly::len`]) in harmonics, where
+    /// `e^{2iθ}` and `e^{−2iθ}` print together as `cos 2θ` and `sin 2θ` terms, more or fewer
+    /// in powers.
+    pub fn printed_terms(&self) -> usize {
+        Angles::current().terms(self).len()
+    }
+
     /// The element as text ([`fmt::Display`]) with its angles in a given form.
     pub fn with_angles(&self, angles: Angles) -> WithAngles<'_, C> {
         WithAngles { poly: self, angles }
