@@ -92,8 +92,8 @@ pub enum AlgebraError {
         /// The bytes they would need, about.
         bytes: u128,
     },
-    /// An element whose normal form in `cos θ, sin θ` could print more terms than the limit
-    /// allows (each `e^{ikθ}` prints as up to `|k| + 1` of them).
+    /// An element that could print more terms than the limit allows, its angles in the form
+    /// printed (each `e^{ikθ}` prints as up to 2 of them in harmonics, `|k| + 1` in powers).
     #[error("{}; raise the limit or print less of it", too_many_printed(*.terms, *.limit))]
     TooManyPrintedTerms {
         /// The bound on the printed terms.

@@ -9,7 +9,7 @@ use crate::error::{AlgebraError, AngleUse};
 use crate::number::{
     Coefficient, GaussianAcc, GaussianInteger, GaussianRational, Integer, IntegerRing, Rational,
 };
-use crate::print::Style;
+use crate::print::{Angles, Style};
 use crate::varset::{Var, VarKind, VarSet, Vars};
 
 impl<C: Coefficient> Poly<C> {
@@ -80,11 +80,13 @@ impl<C: Coefficient> Poly<C> {
         keep
     }
 
-    /// A bound on the number of terms of the normal form [`Poly::cos_sin_terms`], found
-    /// without forming it: over the terms that share a monomial outside the angles, the
-    /// smaller of `Σ Π (|k| + 1)` (each `e^{ikθ}` expands to `|k| + 1` terms `cos^j θ sin^b θ`)
-    /// and `Π (2K + 1)`, for the largest multiple `K` of each angle among them.
-    pub fn printed_terms_bound(&self) -> u64 {
+    /// A bound on the number of terms the element prints as, its angles in the form `angles`
+    /// ([`Poly::harmonic_terms`] or [`Poly::cos_sin_terms`]), found without forming them: over
+    /// the terms that share a monomial outside the angles, the smaller of `Σ Π n_k` (each
+    /// `e^{ikθ}` is `n_k` terms: `cos kθ` and `sin kθ`, 2 for `k ≠ 0`, in harmonics, and
+    /// `|k| + 1` terms `cos^j θ sin^b θ` in powers) and `Π (2K + 1)`, for the largest multiple
+    /// `K` of each angle among them.
+    pub fn printed_terms_bound(&self, angles_form: Angles) -> u64 {
         let angles: Vec<usize> = self.vars.angles().map(|v| v.index()).collect();
         if angles.is_empty() {
             return self.len() as u64;
@@ -102,7 +104,11 @@ impl<C: Coefficient> Poly<C> {
             let mut expansion = 1u64;
             for (a, &j) in angles.iter().enumerate() {
                 let k = layout.get(m, j).unsigned_abs();
-                expansion = expansion.saturating_mul(k + 1);
+                let terms = match angles_form {
+                    Angles::Harmonics => 1 + u64::from(k != 0),
+                    Angles::Powers => k + 1,
+                };
+                expansion = expansion.saturating_mul(terms);
                 largest[a] = largest[a].max(k);
             }
             *sum = sum.saturating_add(expansion);
@@ -118,11 +124,12 @@ impl<C: Coefficient> Poly<C> {
             .fold(0u64, u64::saturating_add)
     }
 
-    /// Refuses to print an element whose normal form could have more terms than the term
-    /// limit ([`Poly::printed_terms_bound`]): `e^{−60iθ}` times 40 000 terms prints 2.4
+    /// Refuses to print an element whose printed form, its angles in the process's form
+    /// ([`Angles::current`]), could have more terms than the term limit
+    /// ([`Poly::printed_terms_bound`]): in powers, `e^{−60iθ}` times 40 000 terms prints 2.4
     /// million, some 250 MB of text.
     pub fn check_printable(&self) -> Result<(), AlgebraError> {
-        let terms = self.printed_terms_bound();
+        let terms = self.printed_terms_bound(Angles::current());
         let limit = self.vars.limits().max_terms;
         match terms > limit as u64 {
             true => Err(AlgebraError::TooManyPrintedTerms { terms, limit }),

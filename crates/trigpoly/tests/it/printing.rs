@@ -972,8 +972,10 @@ fn brief_excerpt_shows_a_long_element_in_part_with_its_size() {
     );
 }
 
-/// The bound on the printed terms is never below their number, is exact for a multiple of
-/// `e^{ikθ}` (`k + 1` terms), and `check_printable` refuses past the term limit.
+/// The bound on the printed terms is never below their number in either form of the angles,
+/// is exact for a multiple of `e^{ikθ}` (`k + 1` terms in powers, `cos kθ` and `sin kθ` in
+/// harmonics), and `check_printable` refuses past the term limit the terms of the form printed
+/// (harmonics, the default): `(1 + x)⁴ e^{9ia}` is 10 terms (50 in powers), `(1 + x)²⁴ e^{ia}` 50.
 #[test]
 fn the_printed_terms_are_bounded_before_they_are_formed() {
     let vars = two_angles();
@@ -985,26 +987,30 @@ fn the_printed_terms_are_bounded_before_they_are_formed() {
         "x + y",
     ] {
         let f: G = p(&vars, text);
-        let printed = f.cos_sin_terms().len() as u64;
-        assert!(f.printed_terms_bound() >= printed, "{text}");
+        let powers = f.cos_sin_terms().len() as u64;
+        assert!(f.printed_terms_bound(Angles::Powers) >= powers, "{text}");
+        let harmonics = f.harmonic_terms().len() as u64;
+        assert!(
+            f.printed_terms_bound(Angles::Harmonics) >= harmonics,
+            "{text}"
+        );
     }
-    assert_eq!(
-        p::<GaussianRational>(&vars, "x*exp(7*i*a)").printed_terms_bound(),
-        8
-    );
+    let seven: G = p(&vars, "x*exp(7*i*a)");
+    assert_eq!(seven.printed_terms_bound(Angles::Powers), 8);
+    assert_eq!(seven.printed_terms_bound(Angles::Harmonics), 2);
     let limited = Vars::builder()
         .coordinate("x")
         .angle("a")
         .limits(trigpoly::Limits::default().max_terms(40))
         .build()
         .unwrap();
-    let wide: G = p(&limited, "(1 + x)^4*exp(9*i*a)");
-    assert_eq!(wide.len(), 5);
+    let wide: G = p(&limited, "(1 + x)^24*exp(i*a)");
+    assert_eq!(wide.len(), 25);
     let err = wide.check_printable().unwrap_err().to_string();
     assert!(err.contains("up to 50 terms"), "{err}");
-    assert!(p::<GaussianRational>(&limited, "(1 + x)^4*exp(6*i*a)")
-        .check_printable()
-        .is_ok());
+    let high: G = p(&limited, "(1 + x)^4*exp(9*i*a)");
+    assert_eq!(high.harmonic_terms().len(), 10);
+    assert!(high.check_printable().is_ok());
 }
 
 /// Asserts the factored form of `src` in unicode, LaTeX and ASCII, and that both the unicode
