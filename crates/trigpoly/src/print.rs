@@ -149,6 +149,13 @@ impl Angles {
 
     /// Makes this form the one the printers of this process write where none is named (a
     /// program's setting, as `--angles` is the command line's: every thread prints in it).
+    ///
+    /// A process-wide setting, not an argument, because [`fmt::Display`] takes none and over a
+    /// hundred places print an element by it or by [`Poly::render`] (reports, messages, errors):
+    /// passing the form as `--full-expressions` is passed, in the renderer's options, would
+    /// reach only the reports. Set it once, before any thread prints, as the command line does;
+    /// a library or a test that wants one form names it ([`Poly::render_with`],
+    /// [`Poly::with_angles`]): setting it in a test changes what tests running beside it print.
     pub fn set_current(self) {
         POWERS.store(self == Angles::Powers, Ordering::Relaxed);
     }
