@@ -4602,19 +4602,39 @@ fn display_names_of_several_words_take_parentheses_only_where_they_would_read_ot
     assert!(table.contains("{Re K, Ω} = (Im K)/I\n"), "{table}");
 }
 
-/// An expansion whose normal form in `cos θ, sin θ` would print past the term limit stops at
-/// once with the limit's message (`K_{60,60}` printed 2.4 million terms, 240 MB, in nine
-/// seconds, past `--max-terms 40000`), and prints below it.
+/// An expansion that would print past the term limit stops at once with the limit's message
+/// (`K_{60,60}` printed 2.4 million terms in powers of cos θ and sin θ, 240 MB, in nine
+/// seconds, past `--max-terms 40000`), and prints below it. The terms are counted in the form
+/// printed: `K_{60,60} = Z⁶⁰e^{−60iθ}` is, in multiple angles, `cos 60θ` and `sin 60θ` times
+/// each of the C(63, 3) = 39711 monomials of `Z⁶⁰` (`Z = p_x − Mωy + i(p_y + Mωx)`), 79422 terms.
 #[test]
 fn an_expansion_that_would_print_past_the_term_limit_is_refused() {
     let file = "systems/harmonic-rotor.toml";
-    let err = crate::superint_refused(&["expand", file, "K_{60,60}", "--max-terms", "40000"]);
-    assert!(
-        err.contains(
-            "<command line>: printed in cos and sin, the result could have up to 2422371 terms"
-        ) && err.contains("past the limit of 40000 (the term limit)"),
-        "{err}"
-    );
+    for (angles, said) in [
+        (
+            "powers",
+            "printed in powers of cos and sin, the result could have up to 2422371 terms",
+        ),
+        (
+            "harmonics",
+            "printed in multiple angles, the result could have up to 79422 terms",
+        ),
+    ] {
+        let err = crate::superint_refused(&[
+            "expand",
+            file,
+            "K_{60,60}",
+            "--max-terms",
+            "40000",
+            "--angles",
+            angles,
+        ]);
+        assert!(
+            err.contains(&format!("<command line>: {said}"))
+                && err.contains("past the limit of 40000 (the term limit)"),
+            "{err}"
+        );
+    }
     let out = run(&["expand", file, "K_{2,2}", "--max-terms", "40"], 0);
     assert!(out.contains("K_{2,2} ="), "{out}");
 }

@@ -2,6 +2,7 @@
 
 use thiserror::Error;
 
+use crate::print::Angles;
 use crate::varset::{long_name, BadName, VarKind, FIELD_BITS, MAX_RADICALS};
 
 /// Why an operation on polynomials has no result.
@@ -94,12 +95,14 @@ pub enum AlgebraError {
     },
     /// An element that could print more terms than the limit allows, its angles in the form
     /// printed (each `e^{ikθ}` prints as up to 2 of them in harmonics, `|k| + 1` in powers).
-    #[error("{}; raise the limit or print less of it", too_many_printed(*.terms, *.limit))]
+    #[error("{}; raise the limit or print less of it", too_many_printed(*.terms, *.limit, *.angles))]
     TooManyPrintedTerms {
         /// The bound on the printed terms.
         terms: u64,
         /// The limit in force.
         limit: usize,
+        /// The form of the angles the terms are counted in.
+        angles: Angles,
     },
     /// A product that would form more term products than the work limit allows.
     #[error("{}; {ADVICE_SIMPLIFY}", too_much_work(*.left, *.right, *.products, *.limit))]
@@ -343,7 +346,11 @@ impl AlgebraError {
     pub fn without_advice(&self) -> String {
         match self {
             AlgebraError::TooManyTerms { limit } => too_many_terms(*limit),
-            AlgebraError::TooManyPrintedTerms { terms, limit } => too_many_printed(*terms, *limit),
+            AlgebraError::TooManyPrintedTerms {
+                terms,
+                limit,
+                angles,
+            } => too_many_printed(*terms, *limit, *angles),
             AlgebraError::TooLargeForMemory { terms, bytes } => {
                 too_large_for_memory(*terms, *bytes)
             }
@@ -418,10 +425,14 @@ fn too_many_terms(limit: usize) -> String {
 }
 
 /// What [`AlgebraError::TooManyPrintedTerms`] says, without its advice.
-fn too_many_printed(terms: u64, limit: usize) -> String {
+fn too_many_printed(terms: u64, limit: usize, angles: Angles) -> String {
+    let (form, each) = match angles {
+        Angles::Harmonics => ("in multiple angles", "2, cos kθ and sin kθ"),
+        Angles::Powers => ("in powers of cos and sin", "k + 1"),
+    };
     format!(
-        "printed in cos and sin, the result could have up to {terms} terms (e^(ikθ) takes up \
-         to k + 1), past the limit of {limit} (the term limit)"
+        "printed {form}, the result could have up to {terms} terms (e^(ikθ) takes up to \
+         {each}), past the limit of {limit} (the term limit)"
     )
 }
 

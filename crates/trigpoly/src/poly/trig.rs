@@ -129,10 +129,15 @@ impl<C: Coefficient> Poly<C> {
     /// ([`Poly::printed_terms_bound`]): in powers, `e^{−60iθ}` times 40 000 terms prints 2.4
     /// million, some 250 MB of text.
     pub fn check_printable(&self) -> Result<(), AlgebraError> {
-        let terms = self.printed_terms_bound(Angles::current());
+        let angles = Angles::current();
+        let terms = self.printed_terms_bound(angles);
         let limit = self.vars.limits().max_terms;
         match terms > limit as u64 {
-            true => Err(AlgebraError::TooManyPrintedTerms { terms, limit }),
+            true => Err(AlgebraError::TooManyPrintedTerms {
+                terms,
+                limit,
+                angles,
+            }),
             false => Ok(()),
         }
     }

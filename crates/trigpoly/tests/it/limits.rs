@@ -809,6 +809,7 @@ fn a_limit_says_what_happened_without_its_advice() {
             AlgebraError::TooManyPrintedTerms {
                 terms: 12,
                 limit: 10,
+                angles: trigpoly::Angles::Powers,
             },
             "raise the limit or print less of it",
         ),

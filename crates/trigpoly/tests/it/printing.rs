@@ -1007,7 +1007,10 @@ fn the_printed_terms_are_bounded_before_they_are_formed() {
     let wide: G = p(&limited, "(1 + x)^24*exp(i*a)");
     assert_eq!(wide.len(), 25);
     let err = wide.check_printable().unwrap_err().to_string();
-    assert!(err.contains("up to 50 terms"), "{err}");
+    assert!(
+        err.contains("printed in multiple angles, the result could have up to 50 terms (e^(ikθ) takes up to 2, cos kθ and sin kθ)"),
+        "{err}"
+    );
     let high: G = p(&limited, "(1 + x)^4*exp(9*i*a)");
     assert_eq!(high.harmonic_terms().len(), 10);
     assert!(high.check_printable().is_ok());
