@@ -562,7 +562,7 @@ impl Condition {
     }
 
     /// Why a condition may not set `v`, if it may not: the radicand of one of the `radicals`
-    /// involves it (see [`Condition::keeps_radicands`]).
+    /// involves it: the radical `r = √(x² + y² + z²)` would keep `r² = x² + y² + z²` at `z = 0`.
     pub fn sets_a_radicand(radicals: &[(Var, Expr)], v: Var) -> Option<String> {
         let (radical, radicand) = radicals.iter().find(|(_, r)| r.contains(v))?;
         let vars = radicand.vars();

@@ -102,7 +102,7 @@ pub struct UnknownStyle(pub String);
 /// paper does) or in powers of `cos θ` and `sin θ` (`A cos²θ + B cos θ sin θ`, the normal form
 /// the engine decides in). Only the text differs: either form parses back to the same element.
 ///
-/// [`Poly::render`], [`Poly::to_string`] and the other printers write the process's form
+/// [`Poly::render`], `Poly`'s `Display` (`to_string`) and the other printers write the process's form
 /// ([`Angles::current`], harmonics unless [`Angles::set_current`] chose powers, as the command
 /// line's `--angles powers` does); [`Poly::render_with`] and [`Poly::with_angles`] name one.
 ///
