@@ -886,16 +886,14 @@ fn find_values(
         (system.space().denominator_atoms().iter()).any(|(_, d)| d.contains(parameter));
     let at = |value: &trigpoly::Rational| -> anyhow::Result<SearchOptions> {
         let mut at = options.clone();
-        match &options.on {
-            _ if in_denominator => at.fixed.push((parameter, value.clone())),
-            Some(_) => at.fixed.push((parameter, value.clone())),
-            None => {
-                let when = match &a.when {
-                    Some(w) => format!("{name} = {value}, {w}"),
-                    None => format!("{name} = {value}"),
-                };
-                at.condition = subject.condition(Some(&when))?;
-            }
+        if options.on.is_some() || in_denominator {
+            at.fixed.push((parameter, value.clone()));
+        } else {
+            let when = match &a.when {
+                Some(w) => format!("{name} = {value}, {w}"),
+                None => format!("{name} = {value}"),
+            };
+            at.condition = subject.condition(Some(&when))?;
         }
         Ok(at)
     };
