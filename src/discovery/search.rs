@@ -1108,10 +1108,9 @@ struct Shared {
     /// Who the report is for, whose options its advice names.
     caller: Caller,
     /// The parameter a `--find-values` run solves for, whose other values the advice does
-    /// not propose (`None` in an ordinary search).
-    solved: Option<Var>,
-    /// The functional rank that run took of the basis, shown as it is.
-    solved_rank: Option<BoundedRank>,
+    /// not propose, and the functional rank that run took of the basis, shown as it is
+    /// (`None` in an ordinary search).
+    solved: Option<(Var, BoundedRank)>,
     /// Whether the report holds what only JSON shows: the search's facts
     /// ([`Shared::search_facts`]) and each integral's claim as text to read back.
     facts: bool,
@@ -1140,8 +1139,7 @@ impl Shared {
             shown: shown_integrals(r),
             names: Names::of_system(system),
             caller,
-            solved: solved.map(|(v, _)| v),
-            solved_rank: solved.map(|(_, rank)| rank.clone()),
+            solved: solved.map(|(v, rank)| (v, rank.clone())),
             facts,
         }
     }
@@ -1194,7 +1192,7 @@ impl Shared {
             system,
             self.held.fixed(),
             (for_every_value, through),
-            (self.caller, self.solved),
+            (self.caller, self.solved.as_ref().map(|(v, _)| *v)),
         ));
         entries.extend(self.symbolic_note());
         // The rank of the basis found; a search whose rank cannot be certified (a denominator
@@ -1203,8 +1201,8 @@ impl Shared {
         // integrals' generation decided bounds it (the search reports the basis as it was,
         // without the new integrals' section).
         let rank_of = |r: &SearchResult| basis_rank(system, options, r, SEARCH_RANK_MINORS).ok();
-        let mut rank = match &self.solved_rank {
-            Some(rank) => Some(rank.clone()),
+        let mut rank = match &self.solved {
+            Some((_, rank)) => Some(rank.clone()),
             None => (!r.basis.is_empty()).then(|| rank_of(r)).flatten(),
         };
         let decided = (rank.as_ref())
