@@ -793,17 +793,17 @@ impl<'a> Builder<'a> {
             return Err(text.error(&self.source, ErrorKind::Expression, at, message));
         }
         let expr = scope.lower(&self.source, &text, &tree)?;
-        // The engine refuses a denominator too (`PhaseSpace::with_brackets`), but at no place
-        // in the file; a negative power or a radical it takes on to the Jacobi check, whose
-        // message blames the brackets, not the value: here each is shown at the value.
-        if let Some((why, hint)) = not_a_polynomial(&expr) {
+        // A negative power of a phase variable the engine would take on to the Jacobi check,
+        // whose message blames the brackets, not the value: here it is shown at the value.
+        if let Some((why, hint)) = negative_power(&expr) {
             return Err(text
                 .error(
                     &self.source,
                     ErrorKind::Expression,
                     tree.span,
                     format!(
-                        "{{{ua}, {ub}}} = {} {why}: a declared bracket is a polynomial",
+                        "{{{ua}, {ub}}} = {} {why}: a declared bracket divides by declared \
+                         denominators and radicals alone",
                         expr.brief_excerpt()
                     ),
                 )
@@ -1642,33 +1642,24 @@ fn momentum(q: &Spanned<String>) -> String {
     format!("p_{}", q.get_ref())
 }
 
-/// Why the value `e` of a declared bracket is not a polynomial in the phase space's variables
-/// and parameters, if it is not, with what to do: it has a denominator atom (`M2/(M1 − M2)`),
-/// a negative power of a variable of phase space (`M2/M1`; a parameter's, `M2/a`, is a
-/// number's, and an angle's is `e^{−iθ}`) or a radical of any power (`M2 r`, `x/r²`).
-fn not_a_polynomial(e: &Expr) -> Option<(String, String)> {
+/// Why the value `e` of a declared bracket is refused, if it is, with what to do: it has a
+/// negative power of a variable of phase space (`M2/M1`; a parameter's, `M2/a`, is a number's,
+/// and an angle's is `e^{−iθ}`), which no declared denominator is (a single term is not
+/// declared) and no command taking declared brackets was examined with. Declared denominators
+/// (`s/(x² + y²)`) and radicals of any power (`s z/r³`) are taken: the bracket goes through
+/// them by the chain rule (`brackets::PhaseSpace`).
+fn negative_power(e: &Expr) -> Option<(String, String)> {
     let vars = e.vars();
     let kind = |v: Var| vars.variable(v).kind();
-    let name = |v: Var| vars.variable(v).unicode().to_string();
-    let held = |k: VarKind| vars.vars().find(|&v| kind(v) == k && e.contains(v));
-    if let Some(d) = held(VarKind::Denominator) {
-        let hint = format!("write it without dividing by {}", name(d));
-        return Some(("has a denominator".into(), hint));
-    }
     let divided_by = vars.vars().find(|&v| {
         !matches!(
             kind(v),
-            VarKind::Parameter | VarKind::Angle | VarKind::Radical
+            VarKind::Parameter | VarKind::Angle | VarKind::Radical | VarKind::Denominator
         ) && e.low_degree(v).is_some_and(|low| low < 0)
-    });
-    if let Some(v) = divided_by {
-        let v = name(v);
-        let hint = format!("write it without dividing by {v}");
-        return Some((format!("has a negative power of {v}"), hint));
-    }
-    let r = name(held(VarKind::Radical)?);
-    let hint = format!("write it in the variables without {r}");
-    Some((format!("has the radical {r}"), hint))
+    })?;
+    let v = vars.variable(divided_by).unicode().to_string();
+    let hint = format!("write it without dividing by {v}");
+    Some((format!("has a negative power of {v}"), hint))
 }
 
 /// The radicals of `[phase_space]`, each name with its radicand; none when it has none.

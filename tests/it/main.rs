@@ -230,6 +230,7 @@ mod exceptional_values;
 mod latex_input;
 mod level_set_claims;
 mod library;
+mod micz_kepler;
 mod poisson;
 mod radicals;
 mod system_files;

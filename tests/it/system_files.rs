@@ -1949,9 +1949,12 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             "bad.toml:12:15: {M3, M1} = i M2 is not real",
             check.clone(),
         ),
-        // It was shown at the [poisson] header, the engine's refusal at no place.
+        // A declared denominator and a radical are taken in a declared bracket (the bracket goes
+        // through them by the chain rule), and the Jacobi identity is checked with them:
+        // {M2, M2/(M1 − M2)} = −M3 ∂(M2/(M1 − M2))/∂M1 = M2 M3/(M1 − M2)², and
+        // {p_x, −M2 r} = M2 x/r for r = √(x² + 1).
         (
-            "a declared bracket with a denominator",
+            "a declared bracket with a denominator that breaks the Jacobi identity",
             TOP.replacen(
                 "parameters = [\"a\"]\n",
                 "parameters = [\"a\"]\ndenominators = [\"M1 - M2\"]\n",
@@ -1959,22 +1962,22 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             )
             .replacen("\"{M3, M1}\" = \"M2\"", "\"{M3, M1}\" = \"M2/(M1 - M2)\"", 1)
             .into_bytes(),
-            "bad.toml:13:15: {M3, M1} = M2/(M1 − M2) has a denominator: a declared bracket is a \
-             polynomial\n 13 | \"{M3, M1}\" = \"M2/(M1 - M2)\"\n    |               ^^^^^^^^^^^^",
+            "bad.toml:13:1: the declared brackets break the Jacobi identity: {M1, {M2, M3}} + \
+             {M2, {M3, M1}} + {M3, {M1, M2}} = M2 M3/(M1 − M2)², not 0",
             check.clone(),
         ),
-        // A negative power of a phase variable and a radical went on to the Jacobi check,
-        // whose message blamed the brackets at the key, not the value.
+        // A negative power of a phase variable went on to the Jacobi check, whose message
+        // blamed the brackets at the key, not the value.
         (
             "a declared bracket with a negative power of a Poisson variable",
             top_with("\"{M3, M1}\" = \"M2/M1\""),
-            "bad.toml:12:15: {M3, M1} = M2/M1 has a negative power of M1: a declared bracket is \
-             a polynomial\n 12 | \"{M3, M1}\" = \"M2/M1\"\n    |               ^^^^^\nhint: write \
+            "bad.toml:12:15: {M3, M1} = M2/M1 has a negative power of M1: a declared bracket \
+             divides by declared denominators and radicals alone\n 12 | \"{M3, M1}\" = \"M2/M1\"\n    |               ^^^^^\nhint: write \
              it without dividing by M1",
             check.clone(),
         ),
         (
-            "a declared bracket with a radical",
+            "a declared bracket with a radical that breaks the Jacobi identity",
             TOP.replacen(
                 "parameters = [\"a\"]\n",
                 "parameters = [\"a\"]\nradicals = { r = \"x^2 + 1\" }\n",
@@ -1982,9 +1985,9 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             )
             .replacen("\"{M3, M1}\" = \"M2\"", "\"{M3, M1}\" = \"M2*r\"", 1)
             .into_bytes(),
-            "bad.toml:13:15: {M3, M1} = M2 r has the radical r: a declared bracket is a \
-             polynomial\n 13 | \"{M3, M1}\" = \"M2*r\"\n    |               ^^^^\nhint: write it \
-             in the variables without r",
+            "bad.toml:13:1: the declared brackets break the Jacobi identity: {p_x, {M1, M3}} + \
+             {M1, {M3, p_x}} + {M3, {p_x, M1}} = x M2/r, not 0; it depends on the declared \
+             {M3, M1}",
             check.clone(),
         ),
         (

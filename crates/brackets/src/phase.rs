@@ -16,6 +16,13 @@
 //! `r` free these brackets are Poisson too: `r² − R` is a Casimir, and in the variables `z`
 //! and `c = r² − R` the bracket is the given one with `c` a Casimir, which the change of
 //! variables `r = √(c + R)` carries over.
+//!
+//! A declared bracket's value may hold the atoms and radicals too (the monopole's
+//! `{π_x, π_y} = s z/r³`): the stand-ins' brackets are formed from the given ones all the same,
+//! `v − D` and `r² − R` stay Casimirs, and putting `D` for `v` and `√R` for `r` still carries a
+//! bracket formed with the stand-ins free to the bracket of the functions (the chain rule), so
+//! the Jacobi identity of the phase variables, checked with the stand-ins' brackets and decided
+//! by `Poly::vanishes`, is that of the functions.
 
 use trigpoly::{Expr, GaussianRational, Rational, Var, VarKind, Vars};
 
@@ -38,7 +45,8 @@ pub struct DeclaredBracket {
     pub a: Var,
     /// The second variable.
     pub b: Var,
-    /// `{a, b}`, a real polynomial in the variables and parameters.
+    /// `{a, b}`, a real function of the variables and parameters: a polynomial, divided by
+    /// declared denominators and with declared radicals where the space has them.
     pub value: Expr,
 }
 
@@ -294,7 +302,8 @@ impl PhaseSpace {
 
     /// The space with the brackets `{a, b} = value` declared, by the variables' names (these
     /// and no others: brackets declared before are replaced); the pairs not given have
-    /// bracket 0. Refused: a pair given twice (in either order), a
+    /// bracket 0. A value may divide by declared denominators and hold radicals
+    /// (`{π_x, π_y} = s z/r³`). Refused: a pair given twice (in either order), a
     /// variable that is not a phase variable, a pair of two canonical variables (their bracket
     /// is fixed), a value that is not real, and brackets that break the Jacobi identity
     /// `{a, {b, c}} + {b, {c, a}} + {c, {a, b}} = 0`, checked exactly for every triple of
@@ -377,13 +386,6 @@ impl PhaseSpace {
             if *value.vars() != vars {
                 return Err(EngineError::Invalid(format!(
                     "the value of {{{ua}, {ub}}} is over other variables than the phase space's"
-                )));
-            }
-            if !value.is_free_of(VarKind::Denominator) {
-                return Err(EngineError::Invalid(format!(
-                    "{{{ua}, {ub}}} = {} has a denominator: a declared bracket is a \
-                     polynomial",
-                    value.brief_excerpt()
                 )));
             }
             if value.conj() != *value {
