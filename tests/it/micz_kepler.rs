@@ -53,7 +53,7 @@ fn expected_bracket(f: &str, g: &str) -> String {
 #[test]
 fn micz_kepler_files_prove_their_claims_both_ways() {
     // The claims checked, and the refuted ids among them (a summary counts claims by id).
-    for (file, checks, refuted) in [(GAUGE, 30, 2), (GAUGE_FREE, 21, 3)] {
+    for (file, checks, refuted) in [(GAUGE, 31, 2), (GAUGE_FREE, 22, 3)] {
         let json = superint_json(&["check", file, "--no-timings"]);
         let summary = &json["summary"];
         assert_eq!(summary["checks"], checks, "{file}: {summary}");
@@ -192,4 +192,46 @@ fn micz_kepler_gauge_free_tower_is_refused() {
         "{refused}"
     );
     assert!(!refused.contains("panicked"), "{refused}");
+}
+
+/// A plot of the gauge-free flow, whose Hamilton's equations go through the declared brackets
+/// with `1/r³`: from `x = (1, 0, 0)`, `π = (0, 4/5, 0)` at `s = k = 1`, `J = (−1, 0, 4/5)`,
+/// `A = π × J − x/r = (−9/25, 0, 4/5)` and `sA − kJ = (16/25, 0, 0)`, so by the file's claim
+/// `plane` the orbit stays on `x = 1` (to the integrator's error), while `z` moves.
+#[test]
+fn micz_kepler_gauge_free_orbit_stays_in_its_plane() {
+    let json = superint_json(&[
+        "plot",
+        GAUGE_FREE,
+        "x",
+        "z",
+        "--against",
+        "y",
+        "--at",
+        "s = 1, k = 1",
+        "--from",
+        "x = 1, y = 0, z = 0, pi_x = 0, pi_y = 4/5, pi_z = 0",
+        "--time",
+        "30",
+        "-o",
+        crate::scratch_text("micz-kepler", "orbit.svg", "")
+            .to_str()
+            .expect("a path"),
+    ]);
+    let row = |name: &str| {
+        json["functions"]
+            .as_array()
+            .expect("functions")
+            .iter()
+            .find(|f| f["function"] == name)
+            .unwrap_or_else(|| panic!("no {name} in {json}"))
+            .clone()
+    };
+    let span = |name: &str| {
+        let f = row(name);
+        f["greatest"].as_f64().expect("a number") - f["least"].as_f64().expect("a number")
+    };
+    assert!(span("x") < 1e-9, "{}", row("x"));
+    assert!(span("z") > 1.0, "{}", row("z"));
+    assert!(span("H") < 1e-9, "{}", row("H"));
 }
