@@ -160,6 +160,56 @@ fn a_declared_bracket_with_a_radical_or_denominator_keeps_the_jacobi_identity() 
     );
 }
 
+/// Brackets through the radical, a declared denominator and their powers, each worked out by
+/// hand: with `{x_i, π_j} = δ_ij` and the positions commuting, `{f(x), π_j} = ∂f/∂x_j`, the
+/// total derivative (`{1/r, π_x} = −x/r³`, `{x/(x² + y²), π_y} = −2xy/(x² + y²)²`,
+/// `{1/(x² + y²)², π_x} = −4x/(x² + y²)³`), and a momentum in `f` brings the declared value
+/// in: `{π_x/r, π_y} = π_x ∂(1/r)/∂y + {π_x, π_y}/r = −yπ_x/r³ + sz/r⁴`, and for the line of
+/// monopoles `{π_x/(x² + y²), π_z} = −{π_z, π_x}/(x² + y²) = −sy/(x² + y²)²`.
+#[test]
+fn brackets_through_a_radical_and_a_declared_denominator_are_the_hand_ones() {
+    let names = ["x", "y", "z", "pi_x", "pi_y", "pi_z"];
+    let builder = names
+        .iter()
+        .fold(Vars::builder(), |b, n| b.poisson(n))
+        .parameter("s");
+    let space = |vars: &Vars, field: [&str; 3]| {
+        let e = |s: &str| Expr::parse(vars, s).unwrap();
+        PhaseSpace::new(vars, &[])
+            .and_then(|space| {
+                space.with_brackets(&[
+                    ("x", "pi_x", e("1")),
+                    ("y", "pi_y", e("1")),
+                    ("z", "pi_z", e("1")),
+                    ("pi_x", "pi_y", e(field[2])),
+                    ("pi_y", "pi_z", e(field[0])),
+                    ("pi_z", "pi_x", e(field[1])),
+                ])
+            })
+            .expect("the Jacobi identity holds")
+    };
+    let agrees = |space: &PhaseSpace, f: &str, g: &str, by_hand: &str| {
+        let e = |s: &str| Expr::parse(space.vars(), s).unwrap();
+        let bracket = space.bracket(&e(f), &e(g)).unwrap();
+        let difference = &bracket - &e(by_hand);
+        assert!(difference.vanishes().unwrap(), "{{{f}, {g}}} = {bracket}");
+    };
+    let vars = builder
+        .clone()
+        .radical("r", "x^2 + y^2 + z^2")
+        .build()
+        .unwrap();
+    let monopole = space(&vars, ["s*x/r^3", "s*y/r^3", "s*z/r^3"]);
+    agrees(&monopole, "1/r", "pi_x", "-x/r^3");
+    agrees(&monopole, "pi_x/r", "pi_y", "-y*pi_x/r^3 + s*z/r^4");
+    agrees(&monopole, "x", "pi_x/r", "1/r");
+    let vars = builder.denominator("x^2 + y^2").unwrap().build().unwrap();
+    let line = space(&vars, ["s*x/(x^2 + y^2)", "s*y/(x^2 + y^2)", "0"]);
+    agrees(&line, "x/(x^2 + y^2)", "pi_y", "-2*x*y/(x^2 + y^2)^2");
+    agrees(&line, "1/(x^2 + y^2)^2", "pi_x", "-4*x/(x^2 + y^2)^3");
+    agrees(&line, "pi_x/(x^2 + y^2)", "pi_z", "-s*y/(x^2 + y^2)^2");
+}
+
 /// The file with the wrong power, `s x_k/r²`, is refused at load: exit 2, the identity of
 /// `π_x, π_y, π_z` and its residual `−s/r²` (written `2s(x² + y² + z²)/r⁴ − 3s/r²`).
 #[test]
