@@ -211,7 +211,8 @@ fn brackets_through_a_radical_and_a_declared_denominator_are_the_hand_ones() {
 }
 
 /// The file with the wrong power, `s x_k/r²`, is refused at load: exit 2, the identity of
-/// `π_x, π_y, π_z` and its residual `−s/r²` (written `2s(x² + y² + z²)/r⁴ − 3s/r²`).
+/// `π_x, π_y, π_z` and its residual `−s/r²`, reduced by `r² = x² + y² + z²` as `expand` prints
+/// it (it was printed `2sx²/r⁴ + 2sy²/r⁴ + 2sz²/r⁴ − 3s/r²`).
 #[test]
 fn a_monopole_table_with_the_wrong_power_is_refused() {
     let text =
@@ -224,7 +225,7 @@ fn a_monopole_table_with_the_wrong_power_is_refused() {
     assert!(
         message.contains(
             "the declared brackets break the Jacobi identity: {π_x, {π_y, π_z}} + \
-             {π_y, {π_z, π_x}} + {π_z, {π_x, π_y}} = 2sx²/r⁴ + 2sy²/r⁴ + 2sz²/r⁴ − 3s/r², not 0"
+             {π_y, {π_z, π_x}} + {π_z, {π_x, π_y}} = −s/r², not 0"
         ),
         "{message}"
     );

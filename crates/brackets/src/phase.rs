@@ -427,12 +427,17 @@ impl PhaseSpace {
     ) -> Result<Box<JacobiViolation>, EngineError> {
         let (triple, residual) = &failures[0];
         let [ua, ub, uc] = triple.map(|v| self.vars.variable(v).unicode());
-        // A long residual in part, with its size: in full it was a message of 1.2 MB (its
-        // terms stay in `residual`).
+        // Over common denominators and with the least powers of the radicals, as `expand`
+        // prints it (`−s/r²`, not `2sx²/r⁴ + 2sy²/r⁴ + 2sz²/r⁴ − 3s/r²`), as it is where that
+        // passes a limit; a long residual in part, with its size: in full it was a message of
+        // 1.2 MB (its terms stay in `residual`).
+        let shown = residual
+            .over_common_denominators()
+            .unwrap_or_else(|_| residual.clone());
         let mut message = format!(
             "the declared brackets break the Jacobi identity: {{{ua}, {{{ub}, {uc}}}}} + \
              {{{ub}, {{{uc}, {ua}}}}} + {{{uc}, {{{ua}, {ub}}}}} = {}, not 0",
-            residual.brief_excerpt()
+            shown.brief_excerpt()
         );
         let depended = self.depended_on(*triple, residual)?;
         if !depended.is_empty() {
