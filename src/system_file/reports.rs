@@ -37,9 +37,14 @@ impl LoadedSystem {
         if let Some(c) = &self.citation {
             entries.push(Entry::Text(format!("Source: {c}")));
         }
+        // Over common denominators and with the least powers of the radicals, as `expand`
+        // prints it (`s²z²/(2r² (x² + y²))`, not `s²z²(x² + y²)/(2r² (x² + y²)²)`); as it is
+        // where that passes a limit.
+        let h = self.system.hamiltonian();
+        let h = h.over_common_denominators().unwrap_or_else(|_| h.clone());
         entries.push(Entry::Equations(Equations::new(
             String::new(),
-            vec![Equation::new("H", self.system.hamiltonian().clone())],
+            vec![Equation::new("H", h)],
         )));
         // What each radical stands for, which H's terms do not show: its radicand as the file
         // declares it, `√((x − a)² + y² + z²)` (its normal form, `√(x² − 2ax + y² + z² + a²)`,

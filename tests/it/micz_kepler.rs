@@ -232,6 +232,18 @@ fn a_monopole_table_with_the_wrong_power_is_refused() {
     assert!(!message.contains("panicked"), "{message}");
 }
 
+/// `check` heads the gauge's file with its `H` reduced as `expand` prints it: the term
+/// `s²z²/(2r² (x² + y²))` of `|π|²/2`, by hand `(s y/(r(r + z)))²/2 + (s x/(r(r + z)))²/2 =
+/// s²/(2r²) · (r − z)²/(x² + y²)`, whose `z²` part it is, not over `(x² + y²)²` with a factor
+/// `x² + y²` above as it was printed.
+#[test]
+fn micz_kepler_check_prints_h_reduced() {
+    let out = crate::superint_ok(&["check", GAUGE, "--no-timings"]);
+    let header = out.split("with r = ").next().expect("the header");
+    assert!(header.contains("s²z²/(2r² (x² + y²))"), "{header}");
+    assert!(!header.contains("(x² + y²)²"), "{header}");
+}
+
 /// `tower` refuses the gauge-free system, as any with radicals (its evaluation takes `r²` and
 /// `x² + y² + z²` for different functions), with exit 2 and no panic; the other commands take
 /// it (`closure` and `search`: `tests/it/discovery.rs`).
