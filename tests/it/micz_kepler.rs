@@ -8,7 +8,7 @@
 
 use brackets::{EngineError, PhaseSpace};
 use superint::system_file::{load, LimitsOverride, LoadedSystem};
-use trigpoly::{Expr, Vars};
+use trigpoly::{Expr, Vars, VarsBuilder};
 
 use crate::{holds, superint_json, superint_refused};
 
@@ -107,6 +107,29 @@ fn micz_kepler_false_claims_are_refuted() {
     }
 }
 
+/// The position `x, y, z` and the kinetic momenta `π` as six Poisson variables, and the
+/// parameter `s`.
+fn kinetic_variables() -> VarsBuilder {
+    ["x", "y", "z", "pi_x", "pi_y", "pi_z"]
+        .iter()
+        .fold(Vars::builder(), |b, n| b.poisson(n))
+        .parameter("s")
+}
+
+/// The kinetic momenta's brackets in the field `B` (its components as text):
+/// `{x_i, π_j} = δ_ij` and `{π_i, π_j} = ε_ijk B_k`.
+fn kinetic_space(vars: &Vars, field: [&str; 3]) -> Result<PhaseSpace, EngineError> {
+    let e = |s: &str| Expr::parse(vars, s).unwrap();
+    PhaseSpace::new(vars, &[])?.with_brackets(&[
+        ("x", "pi_x", e("1")),
+        ("y", "pi_y", e("1")),
+        ("z", "pi_z", e("1")),
+        ("pi_x", "pi_y", e(field[2])),
+        ("pi_y", "pi_z", e(field[0])),
+        ("pi_z", "pi_x", e(field[1])),
+    ])
+}
+
 /// The monopole's brackets in code: six Poisson variables and the radical `r`, `{π_x, π_y} =
 /// s z/r³` and cyclically, accepted (the Jacobi identity of `π_x, π_y, π_z` is `−div B`, zero
 /// off the origin); the field `s x/r²`, whose divergence is `s/r²`, refused with the residual
@@ -114,23 +137,8 @@ fn micz_kepler_false_claims_are_refuted() {
 /// divergence-free, accepted; with the power 2, divergence `−2s/(x² + y²)²`, refused.
 #[test]
 fn a_declared_bracket_with_a_radical_or_denominator_keeps_the_jacobi_identity() {
-    let names = ["x", "y", "z", "pi_x", "pi_y", "pi_z"];
-    let builder = names
-        .iter()
-        .fold(Vars::builder(), |b, n| b.poisson(n))
-        .parameter("s");
-    let table = |vars: &Vars, field: [&str; 3]| -> Result<PhaseSpace, EngineError> {
-        let e = |s: &str| Expr::parse(vars, s).unwrap();
-        PhaseSpace::new(vars, &[])?.with_brackets(&[
-            ("x", "pi_x", e("1")),
-            ("y", "pi_y", e("1")),
-            ("z", "pi_z", e("1")),
-            ("pi_x", "pi_y", e(field[2])),
-            ("pi_y", "pi_z", e(field[0])),
-            ("pi_z", "pi_x", e(field[1])),
-        ])
-    };
-    let refused_by = |vars: &Vars, field: [&str; 3]| match table(vars, field) {
+    let builder = kinetic_variables();
+    let refused_by = |vars: &Vars, field: [&str; 3]| match kinetic_space(vars, field) {
         Err(EngineError::Jacobi(violation)) => violation.residual,
         other => panic!("{field:?} breaks the Jacobi identity: {other:?}"),
     };
@@ -140,9 +148,19 @@ fn a_declared_bracket_with_a_radical_or_denominator_keeps_the_jacobi_identity() 
         .build()
         .unwrap();
     let e = |s: &str| Expr::parse(&vars, s).unwrap();
-    let monopole = table(&vars, ["s*x/r^3", "s*y/r^3", "s*z/r^3"]).expect("Jacobi holds");
+    let monopole = kinetic_space(&vars, ["s*x/r^3", "s*y/r^3", "s*z/r^3"]).expect("Jacobi holds");
     let bracket = monopole.bracket(&e("pi_x"), &e("pi_y")).unwrap();
     assert!((&bracket - &e("s*z/r^3")).vanishes().unwrap());
+    // Its identity of π_x, π_y, π_z holds through r² = x² + y² + z² alone: its terms,
+    // −3s/r³ + 3s(x² + y² + z²)/r⁵ as formed, cancel only by it.
+    let [px, py, pz] = ["pi_x", "pi_y", "pi_z"].map(e);
+    let nested = |a: &Expr, b: &Expr, c: &Expr| {
+        let inner = monopole.bracket(b, c).unwrap();
+        monopole.bracket(a, &inner).unwrap()
+    };
+    let jacobiator = &(&nested(&px, &py, &pz) + &nested(&py, &pz, &px)) + &nested(&pz, &px, &py);
+    assert!(!jacobiator.is_zero(), "{jacobiator}");
+    assert!(jacobiator.vanishes().unwrap(), "{jacobiator}");
     // {r, π_x} = x/r through the radical, for a Poisson variable as for a canonical one.
     let rate = monopole.bracket(&e("r"), &e("pi_x")).unwrap();
     assert!((&rate - &e("x/r")).vanishes().unwrap());
@@ -152,7 +170,7 @@ fn a_declared_bracket_with_a_radical_or_denominator_keeps_the_jacobi_identity() 
     let vars = builder.denominator("x^2 + y^2").unwrap().build().unwrap();
     let e = |s: &str| Expr::parse(&vars, s).unwrap();
     let line = ["s*x/(x^2 + y^2)", "s*y/(x^2 + y^2)", "0"];
-    table(&vars, line).expect("Jacobi holds");
+    kinetic_space(&vars, line).expect("Jacobi holds");
     let residual = refused_by(&vars, ["s*x/(x^2 + y^2)^2", "s*y/(x^2 + y^2)^2", "0"]);
     assert!(
         (&residual - &e("2*s/(x^2 + y^2)^2")).vanishes().unwrap(),
@@ -168,25 +186,9 @@ fn a_declared_bracket_with_a_radical_or_denominator_keeps_the_jacobi_identity() 
 /// monopoles `{π_x/(x² + y²), π_z} = −{π_z, π_x}/(x² + y²) = −sy/(x² + y²)²`.
 #[test]
 fn brackets_through_a_radical_and_a_declared_denominator_are_the_hand_ones() {
-    let names = ["x", "y", "z", "pi_x", "pi_y", "pi_z"];
-    let builder = names
-        .iter()
-        .fold(Vars::builder(), |b, n| b.poisson(n))
-        .parameter("s");
+    let builder = kinetic_variables();
     let space = |vars: &Vars, field: [&str; 3]| {
-        let e = |s: &str| Expr::parse(vars, s).unwrap();
-        PhaseSpace::new(vars, &[])
-            .and_then(|space| {
-                space.with_brackets(&[
-                    ("x", "pi_x", e("1")),
-                    ("y", "pi_y", e("1")),
-                    ("z", "pi_z", e("1")),
-                    ("pi_x", "pi_y", e(field[2])),
-                    ("pi_y", "pi_z", e(field[0])),
-                    ("pi_z", "pi_x", e(field[1])),
-                ])
-            })
-            .expect("the Jacobi identity holds")
+        kinetic_space(vars, field).expect("the Jacobi identity holds")
     };
     let agrees = |space: &PhaseSpace, f: &str, g: &str, by_hand: &str| {
         let e = |s: &str| Expr::parse(space.vars(), s).unwrap();
