@@ -1644,8 +1644,8 @@ fn momentum(q: &Spanned<String>) -> String {
 
 /// Why the value `e` of a declared bracket is refused, if it is, with what to do: it has a
 /// negative power of a variable of phase space (`M2/M1`; a parameter's, `M2/a`, is a number's,
-/// and an angle's is `e^{−iθ}`), which no declared denominator is (a single term is not
-/// declared) and no command taking declared brackets was examined with. Declared denominators
+/// and an angle's is `e^{−iθ}`), which no declared denominator stands for (a denominator is a
+/// sum of terms: a single term is refused there). Declared denominators
 /// (`s/(x² + y²)`) and radicals of any power (`s z/r³`) are taken: the bracket goes through
 /// them by the chain rule (`brackets::PhaseSpace`).
 fn negative_power(e: &Expr) -> Option<(String, String)> {

@@ -7,8 +7,9 @@
 //! `1/D^k`) enters as one more declared variable: `{v, z} = {D, z}` for every phase variable
 //! `z` and `{v, w} = {D, E}` for two atoms, so that the sum above is the chain rule
 //! `∂(v^{−k})/∂z = −k v^{−k−1} ∂D/∂z`. These brackets are a Poisson bracket on the ring with
-//! `v` free (`v − D` is a Casimir of it), and the map `v ↦ D` respects it, so no Jacobi check
-//! is needed for them; results are decided zero by `Poly::vanishes`.
+//! `v` free (`v − D` is a Casimir of it) where the given brackets are polynomials, and the map
+//! `v ↦ D` respects it, so no Jacobi check is needed for them; results are decided zero by
+//! `Poly::vanishes`.
 //!
 //! A radical `r` (a variable standing for `√R`) enters the same way with the derivative of the
 //! root: `{r, z} = {R, z}/(2r)`, `{r, w} = {R, E}/(2r)` for an atom `w = (E)` and
@@ -19,10 +20,13 @@
 //!
 //! A declared bracket's value may hold the atoms and radicals too (the monopole's
 //! `{π_x, π_y} = s z/r³`): the stand-ins' brackets are formed from the given ones all the same,
-//! `v − D` and `r² − R` stay Casimirs, and putting `D` for `v` and `√R` for `r` still carries a
-//! bracket formed with the stand-ins free to the bracket of the functions (the chain rule), so
-//! the Jacobi identity of the phase variables, checked with the stand-ins' brackets and decided
-//! by `Poly::vanishes`, is that of the functions.
+//! and `v − D` and `r² − R` stay Casimirs, so the ideal they generate is kept by the bracket and
+//! putting `D` for `v` and `√R` for `r` carries a bracket formed with the stand-ins free to the
+//! bracket of the functions (the chain rule). The bracket with the stand-ins free is then no
+//! longer Poisson itself (with `r` free the monopole's identity of `π_x, π_y, π_z` is
+//! `−3s/r³ + 3s(x² + y² + z²)/r⁵`, zero only by `r² = R`): the Jacobi identity of the phase
+//! variables, checked with the stand-ins' brackets and decided by `Poly::vanishes`, is that of
+//! the functions, and every result is decided by that test, never by the terms.
 
 use trigpoly::{Expr, GaussianRational, Rational, Var, VarKind, Vars};
 
