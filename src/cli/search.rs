@@ -267,16 +267,14 @@ impl SearchArgs {
 
 /// Refuses, with `--on`, what a search on a level set does not take beside it
 /// ([`BesideLevelSet::for_search`], which words it), before the level set's text is read:
-/// a system the level set is not taken on first, in the engine's words, then the option that
-/// asked for the rest, named: `--when`, `--symbolic`, `--laurent`.
-fn refuse_beside_level_set(system: &System, options: &SearchOptions) -> anyhow::Result<()> {
-    let Some(refused) = BesideLevelSet::for_search(system, options) else {
+/// the option that asked for it, named: `--when`, `--symbolic`.
+fn refuse_beside_level_set(options: &SearchOptions) -> anyhow::Result<()> {
+    let Some(refused) = BesideLevelSet::for_search(options) else {
         return Ok(());
     };
     let option = match refused {
         BesideLevelSet::PhaseCondition { .. } | BesideLevelSet::ParameterCondition => "--when",
         BesideLevelSet::Symbolic => "--symbolic",
-        BesideLevelSet::Laurent => "--laurent",
         _ => bail!("a search on a level set does not take {refused}"),
     };
     bail!(
@@ -288,14 +286,15 @@ fn refuse_beside_level_set(system: &System, options: &SearchOptions) -> anyhow::
 
 /// The level set `text` of `--on`, `EXPR = VALUE`, read and checked
 /// ([`brackets::search::LevelSet::check`], at the values `fixed`; with the parameter
-/// `searched_for` by `--find-values` free, `LevelSet::check_for_values_of`): each refusal
-/// placed in `text` as a condition's is, `<command line>:1:C:` with a caret, at the part it is
-/// about.
+/// `searched_for` by `--find-values` free, `LevelSet::check_for_values_of`; in a Laurent
+/// space where `laurent`): each refusal placed in `text` as a condition's is,
+/// `<command line>:1:C:` with a caret, at the part it is about.
 fn level_set(
     subject: &Subject,
     text: &str,
     fixed: &[(trigpoly::Var, trigpoly::Rational)],
     searched_for: Option<trigpoly::Var>,
+    laurent: bool,
 ) -> anyhow::Result<brackets::search::LevelSet> {
     let refuse = |span: std::ops::Range<usize>, message: String| -> anyhow::Error {
         let error = FileError::at(ErrorKind::Condition, COMMAND_LINE, text, span, message);
@@ -358,8 +357,8 @@ fn level_set(
     }
     let level = brackets::search::LevelSet::new(text, expr, value);
     let checked = match searched_for {
-        Some(parameter) => level.check_for_values_of(subject.system(), fixed, parameter),
-        None => level.check(subject.system(), fixed),
+        Some(parameter) => level.check_for_values_of(subject.system(), fixed, parameter, laurent),
+        None => level.check(subject.system(), fixed, laurent),
     };
     match checked {
         Ok(()) => Ok(level),
@@ -775,12 +774,19 @@ fn search(a: &SearchArgs, subject: &Subject, output: &Output) -> anyhow::Result<
         options.space = options.space.parameters_degree(a.parameters_degree);
     }
     if let Some(on) = &a.on {
-        refuse_beside_level_set(subject.system(), &options)?;
+        refuse_beside_level_set(&options)?;
         // With --find-values, its parameter is free where the flow must keep the level set.
         let searched_for = (a.find_values.as_deref())
             .and_then(|name| subject.system().vars().lookup(name.trim()))
             .filter(|&v| subject.system().vars().variable(v).kind() == VarKind::Parameter);
-        options.on = Some(level_set(subject, on, &options.fixed, searched_for)?);
+        let laurent = options.space.laurent;
+        options.on = Some(level_set(
+            subject,
+            on,
+            &options.fixed,
+            searched_for,
+            laurent,
+        )?);
     }
     if let Some(names) = &a.find_values {
         options.max_minor = usize::try_from(a.max_minor).unwrap_or(usize::MAX);

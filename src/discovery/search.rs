@@ -1906,7 +1906,8 @@ fn unlifted_note(
         .cloned()
         .chain(others.iter().cloned())
         .collect();
-    let refused = (r.on.as_ref()).is_some_and(|on| on.level.check(system, &checked).is_err());
+    let refused =
+        (r.on.as_ref()).is_some_and(|on| on.level.check(system, &checked, false).is_err());
     let how = match caller {
         // On a level set nothing is kept symbolic: other values are what is left, those it is
         // searched at.

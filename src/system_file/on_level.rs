@@ -31,12 +31,12 @@ const USAGE: &str = "a level set reads `EXPR = VALUE`, such as \"A = 0\" or \
 /// for a rank), under its `condition` if it has one: a condition that fixes parameters alone
 /// is taken, and the level set is then that at their values ([`LevelSet::at_values`]). Each
 /// refusal is placed in `text`: a rank claim (the whole text), what
-/// [`BesideLevelSet::for_claim`] refuses, a system with denominators or radicals or a
-/// condition that sets a phase variable (the whole text, before the text is read), no `=`
+/// [`BesideLevelSet::for_claim`] refuses, a condition that sets a phase variable (the whole
+/// text, before the text is read), no `=`
 /// (the whole text) or a second one (it), an empty side (the `=`), a divisor the condition
 /// sets to 0 (the whole text), a value that is no constant (the value), and what
-/// [`LevelSet::check`] refuses, a parameter in the leading coefficient among it (the
-/// expression).
+/// [`LevelSet::check`] refuses, a parameter in the leading coefficient and a variable shared
+/// with a denominator, a radicand or a negative power of `H` among it (the expression).
 pub(crate) fn read_level_set(
     file: &LoadedSystem,
     source: &Source,
@@ -59,7 +59,7 @@ pub(crate) fn read_level_set(
     };
     // What the level set is not taken beside, before its text is read.
     let system = &file.system;
-    if let Some(refused) = BesideLevelSet::for_claim(system, condition) {
+    if let Some(refused) = BesideLevelSet::for_claim(condition) {
         return Err(refuse(
             text,
             whole,
@@ -119,7 +119,7 @@ pub(crate) fn read_level_set(
         refuse(&lhs, lhs.trimmed_span(), why)
     };
     level
-        .check_form(system, "`on`")
+        .check_form(system, "`on`", false)
         .map_err(|e| at_expr(e.to_string()))?;
     let p = level.polynomial().map_err(|e| at_expr(e.to_string()))?;
     // A claim holds for every value of the parameters its condition leaves free: none may be

@@ -229,6 +229,7 @@ mod discovery;
 mod exceptional_values;
 mod latex_input;
 mod level_set_claims;
+mod level_sets_with_relations;
 mod library;
 mod micz_kepler;
 mod poisson;

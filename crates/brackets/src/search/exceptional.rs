@@ -739,8 +739,8 @@ fn problem_with_parameter_kept(
     let Some(level) = &options.on else {
         return Ok(problem);
     };
-    refuse_beside_level_set(system, options)?;
-    level.check_for_values_of(system, &options.fixed, parameter)?;
+    refuse_beside_level_set(options)?;
+    level.check_for_values_of(system, &options.fixed, parameter, options.space.laurent)?;
     let (problem, _, _) = problem.restricted_to(OnLevel::new(level, system, &parameters)?)?;
     Ok(problem)
 }

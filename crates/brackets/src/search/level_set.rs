@@ -82,16 +82,37 @@ impl LevelSet {
         DivisionOrder::graded_lex(&phase)
     }
 
+    /// The order a function is divided by `P` in: graded lexicographic on the phase variables
+    /// that the level set's expression holds, `V(P)`, in their declared order. `P`'s leading
+    /// monomial is the same as in [`LevelSet::order`] (`P` holds no other phase variable), and
+    /// the remainders are the same for a polynomial; a function with a negative power of a
+    /// variable outside `V(P)` (where no relation holds a variable of `P`,
+    /// [`SharedVariable`]) is divided too, that variable a coefficient's.
+    pub fn division_order(&self, system: &System) -> DivisionOrder {
+        let held: Vec<Var> = (Self::order(system).variables().iter())
+            .copied()
+            .filter(|&v| self.expr.contains(v))
+            .collect();
+        DivisionOrder::graded_lex(&held)
+    }
+
     /// Refuses a level set the search cannot take: `expr` holding an angle, a negative power,
     /// a denominator or a radical, or no phase variable at all; `value` holding a phase
-    /// variable; `P` not real (the normal forms of a real function modulo a complex `P` are
-    /// complex, and its real level set needs two equations); a leading coefficient that is no number at the values `fixed` (parameters
+    /// variable; `P` sharing a variable with a relation of the system or of the space, a
+    /// Laurent space where `laurent` ([`SharedVariable`]); `P` not real (the normal forms of a
+    /// real function modulo a complex `P` are complex, and its real level set needs two
+    /// equations); a leading coefficient that is no number at the values `fixed` (parameters
     /// named there are numbers); and a level set that the flow of `H` leaves, `{P, H}` not in
     /// `(P)`, decided by the remainder of its division by `P`, with `H` and `P` at the values
     /// `fixed`, where the search is (the other parameters free): `x² + a y²` keeps
     /// `x p_y − y p_x = 0` at `a = 1` alone, which `--fix a=1` searches.
-    pub fn check(&self, system: &System, fixed: &[(Var, Rational)]) -> Result<(), EngineError> {
-        self.check_form(system, "--on")?;
+    pub fn check(
+        &self,
+        system: &System,
+        fixed: &[(Var, Rational)],
+        laurent: bool,
+    ) -> Result<(), EngineError> {
+        self.check_form(system, "--on", laurent)?;
         self.check_square_free_and_kept(system, fixed, None, CheckedFor::Search)
     }
 
@@ -105,8 +126,9 @@ impl LevelSet {
         system: &System,
         fixed: &[(Var, Rational)],
         parameter: Var,
+        laurent: bool,
     ) -> Result<(), EngineError> {
-        self.check_form(system, "--on")?;
+        self.check_form(system, "--on", laurent)?;
         let checked_for = CheckedFor::ExceptionalValues(parameter);
         self.check_square_free_and_kept(system, fixed, None, checked_for)
     }
@@ -126,7 +148,7 @@ impl LevelSet {
         system: &System,
         condition: Option<&Condition>,
     ) -> Result<(), EngineError> {
-        self.check_form(system, "`on`")?;
+        self.check_form(system, "`on`", false)?;
         self.check_square_free_and_kept(system, &[], condition, CheckedFor::Claim)
     }
 
@@ -192,7 +214,8 @@ impl LevelSet {
             Some(c) => c.apply_where_defined(&flow, "{P, H}")?,
             None => flow,
         };
-        if let Some(v) = negative_power(&flow, &order) {
+        let dividing = self.division_order(system);
+        if let Some(v) = negative_power(&flow, &dividing) {
             return invalid(format!(
                 "{{P, H}} = {} for P = {p}{at} has a negative power of {}: whether the flow of \
                  H keeps the level set, {{P, H}} a multiple of P, is not decided by dividing \
@@ -201,8 +224,8 @@ impl LevelSet {
                 vars_name(&flow, v)
             ));
         }
-        let division = p_divide(&flow, &p, &order)?;
-        if !division.remainder.is_zero() {
+        let division = p_divide(&flow, &p, &dividing)?;
+        if !division.remainder.vanishes()? {
             let searched_for = match checked_for {
                 CheckedFor::ExceptionalValues(parameter) => {
                     let name = system.vars().variable(parameter).unicode();
@@ -225,9 +248,16 @@ impl LevelSet {
 
     /// The part of [`LevelSet::check`] that reads the level set's form alone, its first
     /// refusals: an angle, a denominator or a radical in `expr`, a negative power, no phase
-    /// variable, a value that is no constant ([`LevelSet::check_value`]), and `P` not real,
-    /// whose refusal says that `taken_by` (`--on`, or a claim's `` `on` ``) takes one equation.
-    pub fn check_form(&self, system: &System, taken_by: &str) -> Result<(), EngineError> {
+    /// variable, a value that is no constant ([`LevelSet::check_value`]), `P` sharing a
+    /// variable with a relation ([`SharedVariable`]; a Laurent space's negative powers of the
+    /// coordinates among them where `laurent`), and `P` not real, whose refusal says that
+    /// `taken_by` (`--on`, or a claim's `` `on` ``) takes one equation.
+    pub fn check_form(
+        &self,
+        system: &System,
+        taken_by: &str,
+        laurent: bool,
+    ) -> Result<(), EngineError> {
         let vars = system.vars();
         let invalid = |m: String| Err(EngineError::Invalid(m));
         if let Some(v) = vars
@@ -262,6 +292,9 @@ impl LevelSet {
         }
         self.check_value(system)?;
         let p = self.polynomial()?;
+        if let Some(shared) = SharedVariable::of(system, &p, laurent) {
+            return invalid(shared.to_string());
+        }
         if !p.is_real() && (&p * &GaussianRational::i()).is_real() {
             return invalid(format!(
                 "the level set's polynomial P = {p} is i times a real polynomial: divide EXPR \
@@ -330,7 +363,8 @@ impl LevelSet {
     /// set is decided so.
     pub fn reduce(&self, system: &System, f: &Expr) -> Result<LevelReduction, EngineError> {
         let p = self.polynomial()?;
-        if let Some(v) = negative_power(f, &Self::order(system)) {
+        let dividing = self.division_order(system);
+        if let Some(v) = negative_power(f, &dividing) {
             let v = vars_name(f, v);
             return Err(EngineError::Invalid(format!(
                 "lhs − rhs = {} has a negative power of {v}: a claim on a level set is decided \
@@ -339,10 +373,10 @@ impl LevelSet {
                 f.brief_excerpt()
             )));
         }
-        let (proof, remainder) = proof_by_division(f, &p, &Self::order(system))?;
+        let (proof, remainder) = proof_by_division(f, &p, &dividing)?;
         match proof {
             Some(proof) => Ok(LevelReduction::Vanishes(proof)),
-            None if !remainder.is_zero() => Ok(LevelReduction::Remainder(remainder)),
+            None if !remainder.vanishes()? => Ok(LevelReduction::Remainder(remainder)),
             None => Err(EngineError::Invalid(format!(
                 "the division of {f} by P = {p} left no remainder, but f − Q·P, recomputed, \
                  is not zero"
@@ -373,38 +407,28 @@ pub enum BesideLevelSet {
     ParameterCondition,
     /// A search's parameters kept symbolic.
     Symbolic,
-    /// A system with denominators or radicals.
-    System,
-    /// A search's Laurent space.
-    Laurent,
 }
 
 impl BesideLevelSet {
-    /// What a claim on a level set does not take: a system with denominators or radicals
-    /// first, whatever the claim (no level set is taken on it), then a `condition` that sets a
-    /// phase variable. A condition that fixes parameters alone is taken: it commutes with
-    /// every bracket, and the claim is decided at those values ([`LevelSet::at_values`]).
-    pub fn for_claim(system: &System, condition: Option<&Condition>) -> Option<Self> {
-        Self::of_system(system).or_else(|| condition.and_then(Self::of_phase))
+    /// What a claim on a level set does not take: a `condition` that sets a phase variable. A
+    /// condition that fixes parameters alone is taken: it commutes with every bracket, and
+    /// the claim is decided at those values ([`LevelSet::at_values`]). A system with
+    /// denominators, radicals or negative powers is taken where the level set shares no
+    /// variable with them ([`SharedVariable`], decided with the level set's polynomial).
+    pub fn for_claim(condition: Option<&Condition>) -> Option<Self> {
+        condition.and_then(Self::of_phase)
     }
 
-    /// What a search on a level set does not take: a system with denominators or radicals
-    /// first, whatever the options (no level set is taken on it), then any condition (one
-    /// that fixes parameters alone is said by
-    /// [`SearchOptions::fix`](super::SearchOptions::fix), which the search lifts back from),
-    /// parameters kept symbolic, a Laurent space.
-    pub fn for_search(system: &System, options: &super::SearchOptions) -> Option<Self> {
-        if let Some(refused) = Self::of_system(system) {
-            return Some(refused);
-        }
+    /// What a search on a level set does not take: any condition (one that fixes parameters
+    /// alone is said by [`SearchOptions::fix`](super::SearchOptions::fix), which the search
+    /// lifts back from), then parameters kept symbolic. A system with denominators, radicals
+    /// or negative powers, and a Laurent space, are taken where the level set shares no
+    /// variable with them ([`SharedVariable`]).
+    pub fn for_search(options: &super::SearchOptions) -> Option<Self> {
         if let Some(c) = &options.condition {
             return Some(Self::of_phase(c).unwrap_or(BesideLevelSet::ParameterCondition));
         }
-        if !options.symbolic.is_empty() {
-            Some(BesideLevelSet::Symbolic)
-        } else {
-            options.space.laurent.then_some(BesideLevelSet::Laurent)
-        }
+        (!options.symbolic.is_empty()).then_some(BesideLevelSet::Symbolic)
     }
 
     /// A condition that sets a phase variable, or a parameter to a function of phase space
@@ -419,14 +443,6 @@ impl BesideLevelSet {
             kind,
             parameter,
         })
-    }
-
-    /// A system with denominators or radicals: the normal forms modulo `P` alone are not those
-    /// modulo `P` and the relations of a radical or a denominator.
-    fn of_system(system: &System) -> Option<Self> {
-        let space = system.space();
-        (!space.denominator_atoms().is_empty() || !space.radicals().is_empty())
-            .then_some(BesideLevelSet::System)
     }
 
     /// What is not taken, in words (`a condition that sets p_θ, a momentum`).
@@ -447,10 +463,6 @@ impl BesideLevelSet {
             ),
             BesideLevelSet::ParameterCondition => "a condition that fixes parameters".into(),
             BesideLevelSet::Symbolic => "parameters kept symbolic".into(),
-            BesideLevelSet::System => "a system with denominators or radicals".into(),
-            BesideLevelSet::Laurent => {
-                "a Laurent space (negative powers of the coordinates)".into()
-            }
         }
     }
 
@@ -473,10 +485,6 @@ impl BesideLevelSet {
                 "the parameters are fixed (1 unless {fix} gives other values) and each \
                  integral found is lifted back to them where it can be, and proved there"
             ),
-            BesideLevelSet::System => "the normal forms modulo P alone are not those modulo P \
-                                       and the relations of a radical or a denominator"
-                .into(),
-            BesideLevelSet::Laurent => "the division by P takes polynomials".into(),
         }
     }
 }
@@ -487,6 +495,98 @@ const FIX: &str = "`fix` (on the command line, --fix)";
 impl std::fmt::Display for BesideLevelSet {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(f, "{}: {}", self.what(), self.why(FIX))
+    }
+}
+
+/// A phase variable that a level set's polynomial `P` shares with a relation of the ring it
+/// is taken in: a declared denominator, a radicand, a negative power in `H`, or a Laurent
+/// space's negative powers of the coordinates. The one criterion of a level set on a system
+/// with relations, for a claim's `on` and a search's `--on` alike ([`SharedVariable::of`]).
+///
+/// Let `V(P)` be the phase variables that `P` holds. Where no relation holds one of them (and
+/// `P` holds no atom or radical itself, which [`LevelSet::check_form`] refuses first), the
+/// ring is `A ⊗ k[V(P)]`, with `A` the ring of the other variables, atoms and radicals with
+/// their relations, and `P ∈ k[V(P)]` (parameters as coefficients). So the quotient by `(P)`
+/// is `A ⊗ (k[V(P)]/(P))`: its normal forms are the remainders on division by `P` with `A`'s
+/// elements as coefficients, unique (`k[V(P)]/(P)` has the monomials that `LM(P)` does not
+/// divide as a basis over `k`, so over `A` too), and `f` lies in `(P)` exactly where its
+/// remainder is zero in `A ⊗ k[V(P)]`, which is free over `A`. `LM(P)` in the graded
+/// lexicographic order of all phase variables is its leading monomial in `V(P)` alone, and
+/// the division, ordered by the variables of `V(P)` ([`LevelSet::division_order`]), takes
+/// the other variables to any power, negative too, as coefficients. `A` is reduced (a ring
+/// of functions), so a square-free `P` gives a reduced quotient over a field of
+/// characteristic zero, as without relations.
+///
+/// Where a relation does hold a variable of `P`, the normal forms modulo `P` alone are not
+/// those modulo `P` and the relation: in the Laurent ring of `β/x²`, `x·p_y` and `p_y` span the
+/// same ideal, so `p_y = 0` on `x p_y = 0` is true where `H` is defined, and the remainder
+/// `p_y` would refute it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SharedVariable {
+    /// `P`, as printed.
+    pub polynomial: String,
+    /// The variable shared, as printed.
+    pub variable: String,
+    /// The relation that holds it, in words (`the negative power 1/x² of H`).
+    pub relation: String,
+}
+
+impl SharedVariable {
+    /// The first phase variable of `p` (in declaration order) that a relation of `system`
+    /// holds: a declared denominator, a radicand, a negative power in `H`, and, where
+    /// `laurent`, the negative powers of the coordinates that a Laurent space admits.
+    pub fn of(system: &System, p: &Expr, laurent: bool) -> Option<Self> {
+        let vars = system.vars();
+        let space = system.space();
+        let h = system.hamiltonian();
+        let relation = |v: Var| -> Option<String> {
+            let name = vars.variable(v).unicode();
+            if let Some((_, d)) = space
+                .denominator_atoms()
+                .iter()
+                .find(|(_, d)| d.contains(v))
+            {
+                return Some(format!("the denominator {d}"));
+            }
+            if let Some((r, radicand)) = space.radicals().iter().find(|(_, d)| d.contains(v)) {
+                let r = vars.variable(*r).unicode();
+                return Some(format!("the radicand {radicand} of the radical {r}"));
+            }
+            if let Some((lowest, _)) = h.exponent_range(v).filter(|(lo, _)| *lo < 0) {
+                let mut exponents = vec![0; vars.len()];
+                exponents[v.index()] = lowest;
+                let power = Expr::from_terms(vars, [(Rational::one().into(), exponents)])
+                    .map_or_else(|_| format!("{name}^{lowest}"), |m| m.to_string());
+                return Some(format!("the negative power {power} of H"));
+            }
+            (laurent && vars.variable(v).kind() == VarKind::Coordinate)
+                .then(|| format!("the negative powers of {name} that a Laurent space admits"))
+        };
+        let order = LevelSet::order(system);
+        order
+            .variables()
+            .iter()
+            .filter(|&&v| p.contains(v))
+            .find_map(|&v| {
+                relation(v).map(|relation| SharedVariable {
+                    polynomial: p.to_string(),
+                    variable: vars.variable(v).unicode().to_string(),
+                    relation,
+                })
+            })
+    }
+}
+
+impl std::fmt::Display for SharedVariable {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "the level set's polynomial P = {} shares {} with {}: the normal forms modulo P \
+             are the remainders on division by P only where no declared denominator, radicand \
+             or negative power holds a variable of P, and here they are not those modulo P and \
+             that relation; take a level set of variables that none of them holds",
+            self.polynomial, self.variable, self.relation
+        )
     }
 }
 
@@ -509,11 +609,11 @@ fn proof_by_division(
     order: &DivisionOrder,
 ) -> Result<(Option<LevelProof>, Expr), EngineError> {
     let division = p_divide(f, p, order)?;
-    if !division.remainder.is_zero() {
+    if !division.remainder.vanishes()? {
         return Ok((None, division.remainder));
     }
     let residual = f.checked_sub(&p.checked_mul(&division.quotient)?)?;
-    let proof = residual.is_zero().then(|| LevelProof {
+    let proof = residual.vanishes()?.then(|| LevelProof {
         quotient: division.quotient,
         divisor: p.clone(),
     });
@@ -553,7 +653,7 @@ fn flow_is_multiple(flow: &Expr, p: &Expr, order: &DivisionOrder) -> Result<bool
     if negative_power(flow, order).is_some() {
         return Ok(false);
     }
-    Ok(p_divide(flow, p, order)?.remainder.is_zero())
+    Ok(p_divide(flow, p, order)?.remainder.vanishes()?)
 }
 
 /// What [`LevelSet::check_square_free_and_kept`] checks a level set for, which says where the
@@ -785,6 +885,8 @@ pub(super) struct OnLevel {
     /// coefficient `1/(2M)` is no number).
     pub(super) kept_for_every_value: bool,
     pub(super) order: DivisionOrder,
+    /// The order functions are divided in ([`LevelSet::division_order`]).
+    pub(super) dividing: DivisionOrder,
     /// The exponents of `LM(P)` at the fixed values.
     pub(super) lead: Vec<i64>,
 }
@@ -797,10 +899,11 @@ impl OnLevel {
         parameters: &[(Var, Rational)],
     ) -> Result<Self, EngineError> {
         let order = LevelSet::order(system);
+        let dividing = level.division_order(system);
         let p = level.polynomial()?;
         let flow = system.bracket(&p, system.hamiltonian())?;
         let symbolic = match p.leading_term(&order) {
-            Ok(_) if flow_is_multiple(&flow, &p, &order)? => Some(p.clone()),
+            Ok(_) if flow_is_multiple(&flow, &p, &dividing)? => Some(p.clone()),
             _ => None,
         };
         let kept_for_every_value = symbolic.is_some() || flow.is_zero();
@@ -811,24 +914,25 @@ impl OnLevel {
             symbolic,
             kept_for_every_value,
             order,
+            dividing,
             lead,
         })
     }
 
     /// Whether `LM(P)` divides the monomial `exponents`: a monomial the space leaves out.
     pub(super) fn leaves_out(&self, exponents: &[i64]) -> bool {
-        self.order.divides(&self.lead, exponents)
+        self.dividing.divides(&self.lead, exponents)
     }
 
     /// The first phase variable that `f` holds to a negative power, which division by `P`
     /// does not take ([`p_divide`] refuses it), with its name.
     pub(super) fn negative_power(&self, f: &Expr) -> Option<String> {
-        negative_power(f, &self.order).map(|v| vars_name(f, v))
+        negative_power(f, &self.dividing).map(|v| vars_name(f, v))
     }
 
     /// The remainder of `f` (at the fixed values) on division by `P`: its normal form.
     pub(super) fn remainder(&self, f: &Expr) -> Result<Expr, EngineError> {
-        Ok(p_divide(f, &self.fixed, &self.order)?.remainder)
+        Ok(p_divide(f, &self.fixed, &self.dividing)?.remainder)
     }
 
     /// Whether the part of top degree of `f` (a function at the fixed values) is shown to share
@@ -866,7 +970,7 @@ impl OnLevel {
     /// parameters, as `flow` is): the quotient `Q`, where the remainder is zero and
     /// `flow − p·Q`, recomputed, is zero; `None` where it is not.
     pub(super) fn prove(&self, flow: &Expr, p: &Expr) -> Result<Option<LevelProof>, EngineError> {
-        Ok(proof_by_division(flow, p, &self.order)?.0)
+        Ok(proof_by_division(flow, p, &self.dividing)?.0)
     }
 }
 
@@ -1262,7 +1366,9 @@ pub(super) mod tests {
         let system = on_the_plane("kept at a = 0", "(p_x^2 + p_y^2)/2 + x*y*p_y + a*y", &["a"]);
         let a = system.vars().lookup("a").unwrap();
         let on_p_y = level(&system, "p_y", "0");
-        assert!(on_p_y.check(&system, &[(a, Rational::from(0))]).is_ok());
+        assert!(on_p_y
+            .check(&system, &[(a, Rational::from(0))], false)
+            .is_ok());
         let space = SearchSpace::default().momenta_degree(1).positions_degree(1);
         let options = SearchOptions::new(space).fix(a, 0).on(on_p_y.clone());
         let r = search(&system, &options).unwrap();
@@ -1287,14 +1393,19 @@ pub(super) mod tests {
         let a = oscillator.vars().lookup("a").unwrap();
         let at = |x: i64| [(a, Rational::from(x))];
         let angular = level(&oscillator, "x*p_y - y*p_x", "0");
-        assert!(angular.check(&oscillator, &at(1)).is_ok());
+        assert!(angular.check(&oscillator, &at(1), false).is_ok());
         let leaves = |r: Result<(), EngineError>| match r {
             Err(EngineError::Invalid(m)) => m.starts_with(super::FLOW_LEAVES),
             _ => false,
         };
-        assert!(leaves(angular.check(&oscillator, &at(2))));
-        assert!(leaves(angular.check(&oscillator, &[])));
-        assert!(leaves(angular.check_for_values_of(&oscillator, &[], a)));
+        assert!(leaves(angular.check(&oscillator, &at(2), false)));
+        assert!(leaves(angular.check(&oscillator, &[], false)));
+        assert!(leaves(angular.check_for_values_of(
+            &oscillator,
+            &[],
+            a,
+            false
+        )));
         let space = SearchSpace::default().momenta_degree(2).positions_degree(2);
         let options = SearchOptions::new(space).fix(a, 1).on(angular.clone());
         let r = search(&oscillator, &options).unwrap();

@@ -111,7 +111,7 @@ pub use exceptional::{
     level_set_graph_variable, BasisGenerators, Candidates, DenominatorRoot, Determinants,
     ExceptionalValue, ExceptionalValues, RuledOut, MAX_RANK_MINORS, SEARCH_RANK_MINORS,
 };
-pub use level_set::{BesideLevelSet, LevelProof, LevelReduction, LevelSet};
+pub use level_set::{BesideLevelSet, LevelProof, LevelReduction, LevelSet, SharedVariable};
 pub use options::{SearchOptions, SearchSpace, DEFAULT_MAX_MINOR, DEFAULT_MAX_PRODUCTS};
 pub(crate) use parameters::{check_parameters, off_vanishing_denominators};
 pub use parameters::{fix_parameters, GENERIC_VALUES};
@@ -299,8 +299,8 @@ fn fixed_search_problem(
 ) -> Result<FixedSearch, EngineError> {
     let condition = options.condition.as_ref();
     if let Some(level) = &options.on {
-        refuse_beside_level_set(system, options)?;
-        level.check(system, &options.fixed)?;
+        refuse_beside_level_set(options)?;
+        level.check(system, &options.fixed, options.space.laurent)?;
     }
     if let Some(c) = condition {
         // The search substitutes the condition's values of the declared denominators too,
@@ -373,8 +373,8 @@ fn fixed_search_problem(
 }
 
 /// Refuses what a search on a level set does not take ([`BesideLevelSet::for_search`]).
-fn refuse_beside_level_set(system: &System, options: &SearchOptions) -> Result<(), EngineError> {
-    match BesideLevelSet::for_search(system, options) {
+fn refuse_beside_level_set(options: &SearchOptions) -> Result<(), EngineError> {
+    match BesideLevelSet::for_search(options) {
         Some(refused) => Err(EngineError::Invalid(format!(
             "a search on a level set does not take {refused}"
         ))),

@@ -943,7 +943,7 @@ impl AtValues<'_> {
         match on {
             // A bracket with a negative power is not divided: such a function is not taken.
             Some(level) if level.negative_power(&flow).is_some() => Ok(false),
-            Some(level) => Ok(level.remainder(&flow)?.is_zero()),
+            Some(level) => Ok(level.remainder(&flow)?.vanishes()?),
             None => self.vanishes(system, &flow),
         }
     }

@@ -1,0 +1,342 @@
+//! Level sets (`on` in a claim, `search --on`) on systems with relations: declared
+//! denominators, radicals, negative powers of `H` and Laurent spaces. Taken where the level
+//! set's polynomial `P` shares no variable with them (the ring is then `A ⊗ k[V(P)]`, and the
+//! remainders on division by `P` are its normal forms), refused naming the variable shared
+//! where it does.
+
+use superint::prelude::*;
+
+use crate::{normalize, scratch_text, superint_json, superint_ok, superint_refused};
+
+/// A rotor beside a Calogero pair in a harmonic trap, the denominator `x − y` declared:
+/// with `u = x − y`, `q = p_x − p_y` (`{u, q} = 2`), `A = (q + 2iu)² + 4g/u²` has
+/// `{A, H} = 4iA` (by hand: `{u, H} = q`, `{q, H} = 4g/u³ − 4u`), so `K = A e^{−iθ}` has
+/// `{K, H} = −i(p_θ − 4)K`: conserved on `p_θ = 4` alone.
+const CALOGERO_ROTOR: &str = r#"name = "Calogero pair rotor"
+hamiltonian = "(p_x^2 + p_y^2)/2 + g/(x - y)^2 + (x - y)^2 + p_theta^2/2"
+
+[phase_space]
+coordinates = ["x", "y"]
+angles = ["theta"]
+parameters = ["g"]
+denominators = ["x - y"]
+
+[[function]]
+name = "ReK"
+value = "((p_x - p_y)^2 - 4*(x - y)^2 + 4*g/(x - y)^2)*cos(theta) + 4*(x - y)*(p_x - p_y)*sin(theta)"
+
+[[function]]
+name = "ImK"
+value = "4*(x - y)*(p_x - p_y)*cos(theta) - ((p_x - p_y)^2 - 4*(x - y)^2 + 4*g/(x - y)^2)*sin(theta)"
+"#;
+
+/// A planar Kepler problem beside a free motion in `z`, the radical `r = √(x² + y²)`
+/// declared: `p_z` is conserved and no relation holds it.
+const KEPLER_AND_FREE_Z: &str = r#"name = "planar Kepler and a free z"
+hamiltonian = "(p_x^2 + p_y^2 + p_z^2)/2 - k/r"
+
+[phase_space]
+coordinates = ["x", "y", "z"]
+parameters = ["k", "c"]
+radicals = { r = "x^2 + y^2" }
+"#;
+
+/// `H` with the negative power `b/x²`, whose flow keeps `x p_y = 0`: `{x p_y, H} = x p_y`.
+const BARRIER: &str = r#"name = "barrier"
+hamiltonian = "x*p_x + b/x^2 + p_y^2/2"
+
+[phase_space]
+coordinates = ["x", "y"]
+parameters = ["b"]
+"#;
+
+fn load(name: &str, text: &str) -> Result<LoadedSystem, FileError> {
+    load_system_text(name, text, &LimitsOverride::default())
+}
+
+fn claim_of<'a>(report: &'a Report, id: &str) -> &'a ClaimResult {
+    (report.claims().into_iter().find(|c| c.id == id)).unwrap_or_else(|| panic!("no claim {id}"))
+}
+
+/// `a − b` is zero as a function (modulo the relations of the radicals and denominators).
+fn same(a: &trigpoly::Expr, b: &trigpoly::Expr) -> bool {
+    a.checked_sub(b).unwrap().vanishes().unwrap()
+}
+
+/// Before, a claim on `x p_y = 0` of `H = x p_x + b/x² + p_y²/2` was divided by `x p_y` as a
+/// polynomial, and the true `p_y = 0` (where `H` is defined, `x ≠ 0`, so `x p_y = 0` is
+/// `p_y = 0`) was refuted with the remainder `p_y`: in the Laurent ring `x p_y` and `p_y` span
+/// the same ideal. `P` shares `x` with the negative power of `H`: refused, in place.
+#[test]
+fn a_claim_on_a_level_set_sharing_a_variable_with_a_negative_power_is_refused() {
+    let text =
+        format!("{BARRIER}\n[[claim]]\nid = \"t\"\nclaim = \"p_y = 0\"\non = \"x*p_y = 0\"\n");
+    let err = load("barrier.toml", &text).expect_err("refused");
+    assert_eq!(err.line_col(), Some((text.lines().count(), 7)), "{err}");
+    assert!(
+        err.message
+            .contains("P = x p_y shares x with the negative power 1/x² of H"),
+        "{err}"
+    );
+    // A level set of p_y alone, which no relation holds, is taken: p_y = 0 there, Q = 1.
+    let text = format!("{BARRIER}\n[[claim]]\nid = \"t\"\nclaim = \"p_y = 0\"\non = \"p_y = 0\"\n");
+    let file = load("barrier.toml", &text).expect("loads");
+    let report = check_report([&file]).expect("checked");
+    let t = claim_of(&report, "t");
+    assert!(t.proved, "{t:?}");
+    let quotient = t.on_level.as_ref().unwrap().quotient.clone();
+    assert_eq!(quotient, Some(file.system().parse("1").unwrap()));
+}
+
+/// On the Calogero pair rotor (a declared denominator `x − y`): `{Re K, H} = 0` on
+/// `p_θ = 4`, proved with the quotient `Im K` derived by hand (`{Re K, H} = (p_θ − 4) Im K`),
+/// and refuted on `p_θ = 2` with the remainder `−2 Im K`, and off the level set.
+#[test]
+fn claims_on_a_level_set_beside_a_declared_denominator_are_proved_and_refuted() {
+    let claims = "\n[[claim]]\nid = \"on\"\nclaim = \"{ReK, H} = 0\"\non = \"p_theta = 4\"\n\
+                  \n[[claim]]\nid = \"other\"\nclaim = \"{ReK, H} = 0\"\non = \"p_theta = 2\"\n\
+                  expect = \"refuted\"\n\
+                  \n[[claim]]\nid = \"off\"\nclaim = \"{ReK, H} = 0\"\nexpect = \"refuted\"\n";
+    let file = load("calogero-rotor.toml", &format!("{CALOGERO_ROTOR}{claims}")).expect("loads");
+    let report = check_report([&file]).expect("checked");
+    assert!(report.all_as_expected(), "{report:?}");
+    let p = |s: &str| file.system().parse(s).expect("parses");
+    let on = claim_of(&report, "on");
+    let q = on.on_level.as_ref().unwrap().quotient.as_ref().expect("Q");
+    assert!(same(q, &p("ImK")), "{q}");
+    let other = claim_of(&report, "other");
+    let r = other.residual.as_ref().expect("a remainder");
+    assert!(same(r, &p("-2*ImK")), "{r}");
+}
+
+/// On a system with a radical, `r = √(x² + y²)`, and a free `z`: claims on `p_z = c`. One
+/// holds by the relation `r² = x² + y²` alone (its remainder `c r² − c(x² + y²)` is zero as
+/// a function), with `Q = r²`; `{z, H} k/r = k/r` is refuted with the remainder `(c − 1)k/r`.
+#[test]
+fn claims_on_a_level_set_beside_a_radical_are_proved_and_refuted() {
+    let claims = "\n[[claim]]\nid = \"bracket\"\nclaim = \"{z, H}*k/r = c*k/r\"\n\
+                  on = \"p_z = c\"\n\
+                  \n[[claim]]\nid = \"relation\"\nclaim = \"p_z*r^2 = c*(x^2 + y^2)\"\n\
+                  on = \"p_z = c\"\n\
+                  \n[[claim]]\nid = \"false\"\nclaim = \"{z, H}*k/r = k/r\"\non = \"p_z = c\"\n\
+                  expect = \"refuted\"\n";
+    let file = load("kepler-z.toml", &format!("{KEPLER_AND_FREE_Z}{claims}")).expect("loads");
+    let report = check_report([&file]).expect("checked");
+    assert!(report.all_as_expected(), "{report:?}");
+    let p = |s: &str| file.system().parse(s).expect("parses");
+    let quotient = |id: &str| {
+        let c = claim_of(&report, id);
+        c.on_level.as_ref().unwrap().quotient.clone().expect("Q")
+    };
+    assert!(same(&quotient("bracket"), &p("k/r")));
+    assert!(same(&quotient("relation"), &p("x^2 + y^2")));
+    let r = claim_of(&report, "false")
+        .residual
+        .clone()
+        .expect("a remainder");
+    assert!(same(&r, &p("(c - 1)*k/r")), "{r}");
+    // The level x = 1 shares x with the radicand: refused where it is written.
+    let text =
+        format!("{KEPLER_AND_FREE_Z}\n[[claim]]\nclaim = \"{{z, H}} = 0\"\non = \"x = 1\"\n");
+    let err = load("kepler-z.toml", &text).expect_err("refused");
+    assert_eq!(err.line_col(), Some((text.lines().count(), 7)), "{err}");
+    assert!(
+        err.message
+            .contains("P = x − 1 shares x with the radicand x² + y² of the radical r"),
+        "{err}"
+    );
+}
+
+/// The arguments of a search of the Calogero pair rotor at momenta and positions degree 2,
+/// denominators degree 2, order 1, with `extra`.
+fn calogero_rotor_search(extra: &[&str]) -> Vec<String> {
+    let path = scratch_text(
+        "level-sets-relations",
+        "calogero-rotor.toml",
+        CALOGERO_ROTOR,
+    );
+    let mut args: Vec<String> = ["search", path.to_str().unwrap()]
+        .into_iter()
+        .chain(["--momenta-degree", "2", "--positions-degree", "2"])
+        .chain(["--denominators-degree", "2", "--trig-degree", "1"])
+        .map(String::from)
+        .collect();
+    args.extend(extra.iter().map(|s| s.to_string()));
+    args
+}
+
+/// `search --on 'p_theta = 4'` on the Calogero pair rotor finds `Re K` and `Im K`, each proved
+/// on the level set alone with the quotient derived by hand (`{Re K, H} = (p_θ − 4) Im K`,
+/// `{Im K, H} = −(p_θ − 4) Re K`), among as many integrals as the search with
+/// `--when 'p_theta = 4'` finds (an independent route: the condition substitutes `p_θ`).
+#[test]
+fn a_search_on_a_level_set_beside_a_declared_denominator_finds_its_resonant_integrals() {
+    let run = |extra: &[&str]| {
+        let args = calogero_rotor_search(extra);
+        superint_json(&args.iter().map(String::as_str).collect::<Vec<_>>())
+    };
+    let on = run(&["--on", "p_theta = 4"]);
+    let when = run(&["--when", "p_theta = 4"]);
+    let dimension = |json: &serde_json::Value| json["searches"][0]["dimension"].clone();
+    assert_eq!(dimension(&on), 6);
+    assert_eq!(dimension(&on), dimension(&when));
+    let file = load("calogero-rotor.toml", CALOGERO_ROTOR).expect("loads");
+    let p = |s: &str| file.system().parse(s).expect("parses");
+    // Each integral proved on the level set alone reads `{F, H} = (Q)*(p_theta - 4)`.
+    let mut found = Vec::new();
+    for claim in on["claims"].as_array().unwrap() {
+        let ascii = claim["ascii"].as_str().unwrap();
+        let Some(shown) = ascii.strip_suffix("*(p_theta - 4)") else {
+            continue;
+        };
+        let (f, q) = shown.split_once(", H} = ").unwrap();
+        found.push((p(&f[1..]), p(&q[1..q.len() - 1])));
+    }
+    assert_eq!(found.len(), 2, "{on}");
+    let (re, im) = (p("ReK"), p("ImK"));
+    let minus = |e: &trigpoly::Expr| e.checked_mul(&p("-1")).unwrap();
+    for (f, q) in &found {
+        let expected = match same(f, &re) {
+            true => im.clone(),
+            false if same(f, &minus(&im)) => re.clone(),
+            false => panic!("{f} is neither Re K nor −Im K"),
+        };
+        assert!(same(q, &expected), "{f}: {q}");
+    }
+}
+
+/// `--find-values` on a level set beside a declared denominator follows from the same
+/// criterion: with the trap `w (x − y)²`, `A = (q + 2√w i u)² + 4g/u²` has `{A, H} = 4√w i A`
+/// (the derivation of [`CALOGERO_ROTOR`] with `2w` for 2), so `A e^{−iθ}` is conserved on
+/// `p_θ = 4` where `w = 1`, which the search for `w`'s exceptional values finds.
+#[test]
+fn the_values_of_a_parameter_with_more_integrals_on_a_level_set_beside_a_denominator() {
+    let text = CALOGERO_ROTOR
+        .replace("+ (x - y)^2 +", "+ w*(x - y)^2 +")
+        .replace("parameters = [\"g\"]", "parameters = [\"g\", \"w\"]");
+    let path = scratch_text("level-sets-relations", "calogero-rotor-w.toml", &text);
+    let args = [
+        &[
+            "search",
+            path.to_str().unwrap(),
+            "--on",
+            "p_theta = 4",
+            "--find-values",
+            "w",
+        ][..],
+        &["--momenta-degree", "2", "--positions-degree", "2"],
+        &[
+            "--denominators-degree",
+            "2",
+            "--trig-degree",
+            "1",
+            "--no-timings",
+        ],
+    ]
+    .concat();
+    let found = normalize(&superint_ok(&args));
+    assert!(
+        found.contains("For a generic w (searched at w = 7, no root): 4 integrals")
+            && found.contains("at w = 1, 6 integrals"),
+        "{found}"
+    );
+}
+
+/// The Smorodinsky–Winternitz I rotor, a Laurent search (`β/x²`, `γ/y²`) on `p_θ = 2Iω`,
+/// finds what the documented `--when 'p_theta = 2*I*omega'` search finds: 8 integrals, and
+/// the same four new ones (`Re`, `Im` of `A e^{−iθ}` and `B e^{−iθ}`), those now proved on
+/// the level set alone.
+#[test]
+fn a_laurent_search_on_a_level_set_finds_the_resonant_integrals_of_the_barrier_rotor() {
+    let rotor = "systems/smorodinsky-winternitz-i-rotor.toml";
+    let search = |level: &[&str]| {
+        let args = [
+            &["search", rotor][..],
+            level,
+            &[
+                "--momenta-degree",
+                "2",
+                "--positions-degree",
+                "4",
+                "--trig-degree",
+                "2",
+            ],
+            &["--laurent", "--new-only", "--no-timings"],
+        ]
+        .concat();
+        normalize(&superint_ok(&args))
+    };
+    let on = search(&["--on", "p_theta = 2*I*omega"]);
+    let when = search(&["--when", "p_theta = 2*I*omega"]);
+    let new = |text: &str| -> Vec<String> {
+        let from = text.find("New integrals: Φ").expect("new integrals");
+        let to = text[from..].find("Those of").expect("amplitudes") + from;
+        (text[from..to].split(" Φ").skip(1))
+            .map(|s| {
+                s.split(" = R_")
+                    .next()
+                    .unwrap()
+                    .split(" = −S_")
+                    .next()
+                    .unwrap()
+            })
+            .map(|s| {
+                s.split(" = P_")
+                    .next()
+                    .unwrap()
+                    .split(" = −Q_")
+                    .next()
+                    .unwrap()
+            })
+            .map(|s| s.trim().to_string())
+            .collect()
+    };
+    assert!(
+        on.contains("Dimension of the space of integrals: 8."),
+        "{on}"
+    );
+    assert!(
+        when.contains("Dimension of the space of integrals: 8."),
+        "{when}"
+    );
+    assert_eq!(new(&on), new(&when));
+    assert_eq!(new(&on).len(), 4);
+    assert!(new(&on).iter().all(|f| f.contains("cos θ")), "{on}");
+    assert!(on.contains("{Φ7, H} = Π7 (p_θ − 2ωI)"), "{on}");
+}
+
+/// A level set that shares a variable with a relation is refused, naming the variable and
+/// the relation, exit 2: a declared denominator, a radicand, the negative powers of a
+/// Laurent space; and on the command line at the level set's expression.
+#[test]
+fn a_search_on_a_level_set_sharing_a_variable_with_a_relation_is_refused() {
+    let calogero = calogero_rotor_search(&["--on", "p_x + p_y + x = 0"]);
+    let stderr = superint_refused(&calogero.iter().map(String::as_str).collect::<Vec<_>>());
+    assert!(
+        stderr.contains("P = p_x + p_y + x shares x with the denominator x − y"),
+        "{stderr}"
+    );
+    let stderr = superint_refused(&[
+        "search",
+        "systems/kepler-3d.toml",
+        "--momenta-degree",
+        "1",
+        "--on",
+        "x = 1",
+    ]);
+    assert!(
+        stderr.contains("--on:") && stderr.contains("P = x − 1 shares x with the radicand"),
+        "{stderr}"
+    );
+    let stderr = superint_refused(&[
+        "search",
+        "systems/anisotropic-oscillator-1-2.toml",
+        "--on",
+        "H = 1",
+        "--laurent",
+    ]);
+    assert!(
+        stderr.contains("shares x with the negative powers of x that a Laurent space admits"),
+        "{stderr}"
+    );
+}
