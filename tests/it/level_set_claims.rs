@@ -6,7 +6,7 @@ use superint::prelude::*;
 use superint::report::OnLevelSet;
 
 /// The report's claim `id`, whose `k`-th it is among those of that id.
-fn claim_of<'a>(report: &'a Report, id: &str) -> &'a ClaimResult {
+pub(crate) fn claim_of<'a>(report: &'a Report, id: &str) -> &'a ClaimResult {
     report
         .claims()
         .into_iter()

@@ -6,6 +6,7 @@
 
 use superint::prelude::*;
 
+use crate::level_set_claims::claim_of;
 use crate::{normalize, scratch_text, superint_json, superint_ok, superint_refused};
 
 /// A rotor beside a Calogero pair in a harmonic trap, the denominator `x − y` declared:
@@ -52,10 +53,6 @@ parameters = ["b"]
 
 fn load(name: &str, text: &str) -> Result<LoadedSystem, FileError> {
     load_system_text(name, text, &LimitsOverride::default())
-}
-
-fn claim_of<'a>(report: &'a Report, id: &str) -> &'a ClaimResult {
-    (report.claims().into_iter().find(|c| c.id == id)).unwrap_or_else(|| panic!("no claim {id}"))
 }
 
 /// `a − b` is zero as a function (modulo the relations of the radicals and denominators).

@@ -16,6 +16,18 @@
 //! ([`NormalFormOutside`](super::NormalFormOutside)), and only the integrals whose normal form
 //! lies in the space are found. Each integral is proved by the quotient `Q` of that
 //! division: `{K, H} − P·Q = 0`, recomputed from the bracket and the product.
+//!
+//! On a system with relations (declared denominators, radicals, negative powers of `H`, a
+//! Laurent space) the same holds where no relation holds a phase variable of `P`, `V(P)`:
+//! the ring is then `A ⊗ k[V(P)]`, `A` everything else with its relations and
+//! `P ∈ k[V(P)]`, so its quotient by `(P)` is `A ⊗ k[V(P)]/(P)`, whose normal forms are the
+//! remainders on division by `P` with `A`'s elements as coefficients, unique, and `LM(P)` in
+//! the order of all the phase variables is its leading monomial in `V(P)` alone. Functions
+//! are divided in the order on `V(P)` ([`LevelSet::division_order`]), and a remainder is zero
+//! where it vanishes by the relations. Where a relation holds a variable of `P`, the level set
+//! is refused naming it ([`SharedVariable`], which has the argument in full): in the Laurent
+//! ring of `b/x²`, `x·p_y` and `p_y` span the same ideal, and the remainder `p_y` would refute
+//! the true `p_y = 0` on `x p_y = 0`.
 
 use trigpoly::{
     Division, DivisionOrder, DivisionRefusal, Expr, GaussianRational, Rational, Var, VarKind,
@@ -581,10 +593,10 @@ impl std::fmt::Display for SharedVariable {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(
             f,
-            "the level set's polynomial P = {} shares {} with {}: the normal forms modulo P \
-             are the remainders on division by P only where no declared denominator, radicand \
-             or negative power holds a variable of P, and here they are not those modulo P and \
-             that relation; take a level set of variables that none of them holds",
+            "the level set's polynomial P = {} shares {} with {}: the remainders on division \
+             by P are the normal forms modulo P and the system's relations only where no \
+             declared denominator, radicand or negative power holds a variable of P; take a \
+             level set of variables that none of them holds",
             self.polynomial, self.variable, self.relation
         )
     }
