@@ -1900,7 +1900,9 @@ fn unlifted_note(
     let shown: Vec<String> = (others.iter().zip(&names))
         .map(|((_, value), n)| format!("{n}={value}"))
         .collect();
-    // The level set checked at the others' values, the solved parameter's kept.
+    // The level set checked at the others' values, the solved parameter's kept; in a
+    // polynomial space (`false`): whether it shares a variable with a Laurent space's
+    // negative powers does not depend on the values, and the search took it.
     let checked: Vec<(Var, Rational)> = (r.parameters.iter())
         .filter(|(v, _)| Some(*v) == solved)
         .cloned()
