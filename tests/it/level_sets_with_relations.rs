@@ -85,6 +85,34 @@ fn a_claim_on_a_level_set_sharing_a_variable_with_a_negative_power_is_refused() 
     assert_eq!(quotient, Some(file.system().parse("1").unwrap()));
 }
 
+/// On the Smorodinsky–Winternitz I rotor (`β/x²`, `γ/y²` in `H`), its file's `P_{1,1} = Re K`
+/// on `p_θ = 2Iω`: `{K, H} = i(2ω − p_θ/I)K` (the family's eigenvalue at `m = n = 1`), so
+/// `{P_{1,1}, H} = (p_θ − 2Iω) Q_{1,1}/I`, proved with that quotient; on `p_θ = Iω` it is
+/// refuted with the remainder `(Iω − 2Iω) Q_{1,1}/I = −ω Q_{1,1}`. Before, `lhs − rhs`, which
+/// holds `1/x²`, was refused for its negative power, though `P` holds no `x`.
+#[test]
+fn claims_on_a_level_set_free_of_the_negative_powers_of_h_are_decided() {
+    let rotor = std::fs::read_to_string("systems/smorodinsky-winternitz-i-rotor.toml").unwrap();
+    let claims = "\n[[claim]]\nid = \"on\"\nclaim = \"{P_1_1, H} = 0\"\n\
+                  on = \"p_theta = 2*I*omega\"\n\
+                  \n[[claim]]\nid = \"other\"\nclaim = \"{P_1_1, H} = 0\"\n\
+                  on = \"p_theta = I*omega\"\nexpect = \"refuted\"\n";
+    let file = load("sw-rotor.toml", &format!("{rotor}{claims}")).expect("loads");
+    let report = check_report([&file]).expect("checked");
+    assert!(report.all_as_expected());
+    let p = |s: &str| file.system().parse(s).expect("parses");
+    // Q_{1,1} = Im(A e^{−iθ}) with A = (p_x + iMωx)² + 2Mβ/x².
+    let q11 = "(2*M*omega*x*p_x*cos(theta) - (p_x^2 - M^2*omega^2*x^2 + 2*M*beta/x^2)*sin(theta))";
+    let on = claim_of(&report, "on");
+    let q = on.on_level.as_ref().unwrap().quotient.as_ref().expect("Q");
+    assert!(same(q, &p(&format!("{q11}/I"))), "{q}");
+    let r = claim_of(&report, "other")
+        .residual
+        .clone()
+        .expect("a remainder");
+    assert!(same(&r, &p(&format!("-omega*{q11}"))), "{r}");
+}
+
 /// On the Calogero pair rotor (a declared denominator `x − y`): `{Re K, H} = 0` on
 /// `p_θ = 4`, proved with the quotient `Im K` derived by hand (`{Re K, H} = (p_θ − 4) Im K`),
 /// and refuted on `p_θ = 2` with the remainder `−2 Im K`, and off the level set.
