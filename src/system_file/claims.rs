@@ -990,6 +990,10 @@ impl LoadedSystem {
                     // On a level set: `lhs − rhs` divided by its polynomial, at the values of
                     // the parameters that the condition fixes, if any.
                     Some(level) => {
+                        (level
+                            .level
+                            .check_defined_on(&self.system, &[&l, &r], &inputs))
+                        .map_err(|e| at(&e))?;
                         let mut d = l.checked_sub(&r).map_err(|e| at(&e.into()))?;
                         if let Some(c) = &spec.condition {
                             c.defined_on(&[&l, &r], "the claim").map_err(|e| at(&e))?;

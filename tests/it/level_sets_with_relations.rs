@@ -365,3 +365,33 @@ fn a_search_on_a_level_set_sharing_a_variable_with_a_relation_is_refused() {
         "{stderr}"
     );
 }
+
+/// A claim whose side, or a function it names, divides by a variable of `P` is refused at
+/// the claim, though `H` holds no negative power: `F = p_y + 1/x` has no value where `x = 0`,
+/// so `F = 1/x` on `x p_y = 0` is a claim where `x ≠ 0`, that is on `p_y = 0`, where it holds
+/// (`F − 1/x = p_y`); before, `lhs − rhs = p_y`, whose `1/x` cancelled, was divided by `x p_y`
+/// and the true claim refuted with the remainder `p_y`. So for `{F, y} = 1 − p_y` (the
+/// bracket, `−1`, has cancelled `1/x` too, and `F`, which it is computed from, divides by `x`).
+#[test]
+fn a_claim_dividing_by_a_variable_of_the_level_set_is_refused() {
+    let system = "name = \"free\"\nhamiltonian = \"x*p_x + p_y^2/2\"\n\
+                  [phase_space]\ncoordinates = [\"x\", \"y\"]\n\
+                  [[function]]\nname = \"F\"\nvalue = \"p_y + 1/x\"\n";
+    for (claim, what) in [("F = 1/x", "the claim"), ("{F, y} = p_y - 1", "F")] {
+        let text =
+            format!("{system}[[claim]]\nid = \"t\"\nclaim = \"{claim}\"\non = \"x*p_y = 0\"\n");
+        let file = scratch_text("dividing-claim", "free.toml", &text);
+        let stderr = superint_refused(&["check", file.to_str().unwrap()]);
+        assert!(
+            stderr.contains(&format!(
+                "{what} divides by x, a variable of the level set's polynomial P = x p_y"
+            )),
+            "{stderr}"
+        );
+        // On p_y = 0, which the claim does not divide by, it is proved.
+        let text = text.replace("x*p_y = 0", "p_y = 0");
+        let file = scratch_text("dividing-claim", "free.toml", &text);
+        let stdout = superint_ok(&["check", file.to_str().unwrap()]);
+        assert!(stdout.contains("1 proved"), "{stdout}");
+    }
+}

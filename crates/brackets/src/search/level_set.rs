@@ -35,6 +35,7 @@ use trigpoly::{
 
 use crate::claim::Condition;
 use crate::error::EngineError;
+use crate::inputs::Input;
 use crate::modular::{Field, Fp, PRIME};
 use crate::system::System;
 use crate::univariate::{gcd_mod, is_square_free_mod};
@@ -361,6 +362,42 @@ impl LevelSet {
             expr: condition.apply(&self.expr)?,
             value: condition.apply(&self.value)?,
         })
+    }
+
+    /// Refuses a claim on the level set whose `sides`, or a function they were computed from
+    /// (`inputs`, as [`Condition::defined_on_inputs`] takes them), divide by a phase variable
+    /// of `P`: the claim is then about the level set where that variable is not zero, whose
+    /// ideal division by `P` does not see, though `lhs − rhs` may have cancelled the divisor
+    /// (`p_y + 1/x = 1/x` on `x p_y = 0` holds where `x ≠ 0`, and the remainder is `p_y`).
+    pub fn check_defined_on(
+        &self,
+        system: &System,
+        sides: &[&Expr],
+        inputs: &[Input],
+    ) -> Result<(), EngineError> {
+        let dividing = self.division_order(system);
+        let named = (sides.iter().map(|side| (*side, "the claim".to_string()))).chain(
+            inputs.iter().map(|i| match &i.via {
+                Some(via) => (
+                    &i.value,
+                    format!("the claim's {via}, computed from {},", i.what),
+                ),
+                None => (&i.value, i.what.clone()),
+            }),
+        );
+        for (f, what) in named {
+            if let Some(v) = negative_power(f, &dividing) {
+                let p = self.polynomial()?;
+                let v = vars_name(f, v);
+                return Err(EngineError::Invalid(format!(
+                    "{what} divides by {v}, a variable of the level set's polynomial P = {p}: \
+                     it has no value where {v} = 0, and the claim, on the level set where \
+                     {v} ≠ 0, is not decided by dividing by P; take a level set of variables \
+                     that the claim does not divide by"
+                )));
+            }
+        }
+        Ok(())
     }
 
     /// Divides `f` by `P` with its parameters (its leading coefficient a number, as
