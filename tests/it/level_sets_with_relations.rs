@@ -395,3 +395,46 @@ fn a_claim_dividing_by_a_variable_of_the_level_set_is_refused() {
         assert!(stdout.contains("1 proved"), "{stdout}");
     }
 }
+
+/// A free pair with the denominator `x − a` declared, where `H`'s
+/// `y x/(x − a) − a y/(x − a) − y` is zero and `p_x x/(x − a) − a p_x/(x − a)` is `p_x`: at
+/// `a = 1` a remainder holding `1/(x − a)` is zero only with the atom's polynomial at that
+/// value too. Before, the flow's `{p_y, H} = −(x − 1)/(x − a) + 1` (zero, by hand) refused
+/// `p_y = 0` as left by the flow, and the known integral, whose bracket
+/// `−p_x²(a − 1)/(x − a)²` is zero at `a = 1`, was refused as no integral on `p_y = 0`, and
+/// the basis's `p_x` was refuted at `a = 1`.
+#[test]
+fn a_remainder_at_the_fixed_values_is_zero_with_the_atoms_at_them() {
+    let system = "name = \"free pair\"\nhamiltonian = \"(p_x^2 + p_y^2)/2 + y*x/(x - a) - a*y/(x - a) - y\"\n\
+                  [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\"]\n\
+                  denominators = [\"x - a\"]\n";
+    let file = scratch_text("remainder-at-values", "pair.toml", system);
+    let file = file.to_str().unwrap();
+    let degrees = [
+        "--momenta-degree",
+        "1",
+        "--positions-degree",
+        "1",
+        "--denominators-degree",
+        "0",
+    ];
+    let mut kept = vec!["search", file, "--on", "p_y = 0", "--fix", "a=1"];
+    kept.extend(degrees);
+    let stdout = superint_ok(&kept);
+    assert!(stdout.contains("on the level set p_y = 0"), "{stdout}");
+    // p_x among the basis, whose {p_x, H} = y/(x − a) − (x − a)y/(x − a)² is zero by hand.
+    assert!(stdout.contains("I3 = p_x") && stdout.contains("4 claims: 4 proved"), "{stdout}");
+    let known = "p_x*x/(x - a) - a*p_x/(x - a)";
+    let mut with_known = vec![
+        "search",
+        file,
+        "--on",
+        "p_y = 0",
+        "--new-only",
+        "--known",
+        known,
+    ];
+    with_known.extend(degrees);
+    let stdout = superint_ok(&with_known);
+    assert!(stdout.contains("0 refuted"), "{stdout}");
+}

@@ -12,7 +12,7 @@ use rustc_hash::FxHashMap;
 use trigpoly::{Expr, GaussianRational, Rational, ReducedRadical, Var};
 
 use crate::search::fix_parameters;
-use crate::EngineError;
+use crate::{EngineError, PhaseSpace};
 
 /// Refuses an atom that one of `exprs` divides by (holds to a negative power) whose polynomial
 /// vanishes at the fixed values: what [`Clearing::new`] refuses among its vectors, for what
@@ -72,6 +72,27 @@ fn atom_at_values(
         )));
     }
     Ok(at)
+}
+
+/// Whether `e`, a function at the fixed values `parameters`, is zero: through one
+/// [`Clearing`], with the atoms' polynomials and the radicands at those values too, where the
+/// ring's own zero test ([`Expr::vanishes`]) takes them with symbolic parameters and would
+/// leave a residual in the parameters an atom holds (`1/(x − a)` at `a = 1`).
+pub(crate) fn vanishes_at_values(
+    space: &PhaseSpace,
+    parameters: &[(Var, Rational)],
+    e: &Expr,
+) -> Result<bool, EngineError> {
+    let clearing = Clearing::new(
+        space.denominator_atoms(),
+        space.radicals(),
+        parameters,
+        std::iter::once(e),
+    )?;
+    Ok(match clearing {
+        Some(clearing) => clearing.apply(e)?.is_zero(),
+        None => e.is_zero(),
+    })
 }
 
 /// The injective linear map the linear algebra takes its vectors through on a system with

@@ -34,6 +34,7 @@ use trigpoly::{
 };
 
 use crate::claim::Condition;
+use crate::clearing::vanishes_at_values;
 use crate::error::EngineError;
 use crate::inputs::Input;
 use crate::modular::{Field, Fp, PRIME};
@@ -218,10 +219,8 @@ impl LevelSet {
             true => (fix_parameters(&p, fixed)?, " at the fixed values"),
             false => (p, at),
         };
-        let h = fix_parameters(
-            system.hamiltonian(),
-            if at.is_empty() { &[] } else { fixed },
-        )?;
+        let h_fixed = if at.is_empty() { &[] } else { fixed };
+        let h = fix_parameters(system.hamiltonian(), h_fixed)?;
         let flow = system.bracket(&p, &h)?;
         let flow = match condition {
             Some(c) => c.apply_where_defined(&flow, "{P, H}")?,
@@ -238,7 +237,7 @@ impl LevelSet {
             ));
         }
         let division = p_divide(&flow, &p, &dividing)?;
-        if !division.remainder.vanishes()? {
+        if !vanishes_at_values(system.space(), h_fixed, &division.remainder)? {
             let searched_for = match checked_for {
                 CheckedFor::ExceptionalValues(parameter) => {
                     let name = system.vars().variable(parameter).unicode();
@@ -422,7 +421,7 @@ impl LevelSet {
                 f.brief_excerpt()
             )));
         }
-        let (proof, remainder) = proof_by_division(f, &p, &dividing)?;
+        let (proof, remainder) = proof_by_division(f, &p, &dividing, system, &[])?;
         match proof {
             Some(proof) => Ok(LevelReduction::Vanishes(proof)),
             None if !remainder.vanishes()? => Ok(LevelReduction::Remainder(remainder)),
@@ -651,18 +650,23 @@ pub enum LevelReduction {
 
 /// The division of `f` by `p` in `order`: the proof that `f` lies in `(p)`, the quotient `Q`,
 /// where the remainder is zero and `f − p·Q`, recomputed, is zero (else `None`), and the
-/// remainder.
+/// remainder. `f` and `p` are at the parameters' `values` (none where they are symbolic), where
+/// an expression is zero with the system's atoms and radicands at them too
+/// ([`vanishes_at_values`]).
 fn proof_by_division(
     f: &Expr,
     p: &Expr,
     order: &DivisionOrder,
+    system: &System,
+    values: &[(Var, Rational)],
 ) -> Result<(Option<LevelProof>, Expr), EngineError> {
+    let zero = |e: &Expr| vanishes_at_values(system.space(), values, e);
     let division = p_divide(f, p, order)?;
-    if !division.remainder.vanishes()? {
+    if !zero(&division.remainder)? {
         return Ok((None, division.remainder));
     }
     let residual = f.checked_sub(&p.checked_mul(&division.quotient)?)?;
-    let proof = residual.vanishes()?.then(|| LevelProof {
+    let proof = zero(&residual)?.then(|| LevelProof {
         quotient: division.quotient,
         divisor: p.clone(),
     });
@@ -1015,11 +1019,17 @@ impl OnLevel {
         }))
     }
 
-    /// The proof that `flow` lies in `(p)` (`p` is `P` at the fixed values or with its
-    /// parameters, as `flow` is): the quotient `Q`, where the remainder is zero and
-    /// `flow − p·Q`, recomputed, is zero; `None` where it is not.
-    pub(super) fn prove(&self, flow: &Expr, p: &Expr) -> Result<Option<LevelProof>, EngineError> {
-        Ok(proof_by_division(flow, p, &self.dividing)?.0)
+    /// The proof that `flow` lies in `(p)` (`p` is `P` at the parameters' `values`, the fixed
+    /// ones, or with its parameters, no values, as `flow` is): the quotient `Q`, where the
+    /// remainder is zero and `flow − p·Q`, recomputed, is zero; `None` where it is not.
+    pub(super) fn prove(
+        &self,
+        system: &System,
+        flow: &Expr,
+        p: &Expr,
+        values: &[(Var, Rational)],
+    ) -> Result<Option<LevelProof>, EngineError> {
+        Ok(proof_by_division(flow, p, &self.dividing, system, values)?.0)
     }
 }
 

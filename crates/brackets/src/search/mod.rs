@@ -510,10 +510,11 @@ impl<'a> Prover<'a> {
         reference: &[i64],
     ) -> Result<Integral, EngineError> {
         let system = self.system;
-        let at_fixed = level.prove(&self.problem.flow(system, &fixed)?, &level.fixed)?;
+        let flow = self.problem.flow(system, &fixed)?;
+        let at_fixed = level.prove(system, &flow, &level.fixed, self.parameters)?;
         let prove_symbolic = |f: &Expr| -> Result<Option<LevelProof>, EngineError> {
             match &level.symbolic {
-                Some(p) => level.prove(&system.bracket(f, system.hamiltonian())?, p),
+                Some(p) => level.prove(system, &system.bracket(f, system.hamiltonian())?, p, &[]),
                 None => Ok(None),
             }
         };

@@ -9,7 +9,7 @@ use trigpoly::{
     Expr, GaussianRational, LimitKind, MonomialIndex, Rational, Term, Var, VarKind, Vars,
 };
 
-use crate::clearing::Clearing;
+use crate::clearing::vanishes_at_values;
 use crate::error::{EngineError, EngineLimit};
 use crate::modular::{sum_by_index, Field, Fp, SparseVec};
 use crate::system::System;
@@ -911,28 +911,16 @@ impl AtValues<'_> {
         self.apply_condition(flow)
     }
 
-    /// Whether `flow`, a function at the fixed values, is zero: decided with the atoms'
-    /// polynomials and the radicands at the fixed values too (through one [`Clearing`]), where
-    /// the ring's own zero test (`vanishes`) takes them with symbolic parameters, which would
-    /// leave a residual in the parameters an atom holds (`1/(x − a)` at `a = 1`).
+    /// Whether `flow`, a function at the fixed values, is zero ([`vanishes_at_values`]).
     pub(super) fn vanishes(&self, system: &System, flow: &Expr) -> Result<bool, EngineError> {
-        let space = system.space();
-        let clearing = Clearing::new(
-            space.denominator_atoms(),
-            space.radicals(),
-            self.parameters,
-            std::iter::once(flow),
-        )?;
-        Ok(match clearing {
-            Some(clearing) => clearing.apply(flow)?.is_zero(),
-            None => flow.is_zero(),
-        })
+        vanishes_at_values(system.space(), self.parameters, flow)
     }
 
     /// Whether `f`, a function at the fixed values, is an integral: its bracket with `H`
     /// ([`AtValues::flow`]) zero, or, on the level set `on`, a multiple of its polynomial
-    /// (the remainder of its division by it zero; a level set takes no condition; a bracket
-    /// with a negative power of a phase variable is not divided, and the function not taken).
+    /// (the remainder of its division by it zero, [`AtValues::vanishes`]; a level set takes
+    /// no condition; a bracket with a negative power of a phase variable is not divided, and
+    /// the function not taken).
     pub(super) fn is_integral(
         &self,
         system: &System,
@@ -943,7 +931,8 @@ impl AtValues<'_> {
         match on {
             // A bracket with a negative power is not divided: such a function is not taken.
             Some(level) if level.negative_power(&flow).is_some() => Ok(false),
-            Some(level) => Ok(level.remainder(&flow)?.vanishes()?),
+            // The remainder is at the fixed values: zero through their clearing.
+            Some(level) => self.vanishes(system, &level.remainder(&flow)?),
             None => self.vanishes(system, &flow),
         }
     }
