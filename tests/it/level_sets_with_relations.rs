@@ -396,7 +396,14 @@ fn a_claim_dividing_by_a_variable_of_the_level_set_is_refused() {
     }
 }
 
-/// A free pair with the denominator `x − a` declared, where `H`'s
+/// A free pair with the denominator `x − a` declared and `H`'s `y x/(x − a) − a y/(x − a) − y`,
+/// zero by the atom's relation.
+const FREE_PAIR: &str = "name = \"free pair\"\n\
+    hamiltonian = \"(p_x^2 + p_y^2)/2 + y*x/(x - a) - a*y/(x - a) - y\"\n\
+    [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\"]\n\
+    denominators = [\"x - a\"]\n";
+
+/// [`FREE_PAIR`], where `H`'s
 /// `y x/(x − a) − a y/(x − a) − y` is zero and `p_x x/(x − a) − a p_x/(x − a)` is `p_x`: at
 /// `a = 1` a remainder holding `1/(x − a)` is zero only with the atom's polynomial at that
 /// value too. Before, the flow's `{p_y, H} = −(x − 1)/(x − a) + 1` (zero, by hand) refused
@@ -405,10 +412,7 @@ fn a_claim_dividing_by_a_variable_of_the_level_set_is_refused() {
 /// the basis's `p_x` was refuted at `a = 1`.
 #[test]
 fn a_remainder_at_the_fixed_values_is_zero_with_the_atoms_at_them() {
-    let system = "name = \"free pair\"\nhamiltonian = \"(p_x^2 + p_y^2)/2 + y*x/(x - a) - a*y/(x - a) - y\"\n\
-                  [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\"]\n\
-                  denominators = [\"x - a\"]\n";
-    let file = scratch_text("remainder-at-values", "pair.toml", system);
+    let file = scratch_text("remainder-at-values", "pair.toml", FREE_PAIR);
     let file = file.to_str().unwrap();
     let degrees = [
         "--momenta-degree",
@@ -423,7 +427,10 @@ fn a_remainder_at_the_fixed_values_is_zero_with_the_atoms_at_them() {
     let stdout = superint_ok(&kept);
     assert!(stdout.contains("on the level set p_y = 0"), "{stdout}");
     // p_x among the basis, whose {p_x, H} = y/(x − a) − (x − a)y/(x − a)² is zero by hand.
-    assert!(stdout.contains("I3 = p_x") && stdout.contains("4 claims: 4 proved"), "{stdout}");
+    assert!(
+        stdout.contains("I3 = p_x") && stdout.contains("4 claims: 4 proved"),
+        "{stdout}"
+    );
     let known = "p_x*x/(x - a) - a*p_x/(x - a)";
     let mut with_known = vec![
         "search",
@@ -437,4 +444,31 @@ fn a_remainder_at_the_fixed_values_is_zero_with_the_atoms_at_them() {
     with_known.extend(degrees);
     let stdout = superint_ok(&with_known);
     assert!(stdout.contains("0 refuted"), "{stdout}");
+}
+
+/// On [`FREE_PAIR`], `a p_y = 0` is kept by the flow for every value of `a`: `{a p_y, H}` is
+/// `a(1 − (x − a)/(x − a))`, zero by the atom's relation though not as written. Before, the
+/// search, which divides by `P` at the fixed values only where its leading coefficient `a` is
+/// a parameter, said it kept at the fixed values alone.
+#[test]
+fn a_level_set_whose_flow_is_zero_by_the_relations_is_kept_for_every_value() {
+    let file = scratch_text("kept-for-every-value", "pair.toml", FREE_PAIR);
+    let stdout = superint_ok(&[
+        "search",
+        file.to_str().unwrap(),
+        "--on",
+        "a*p_y = 0",
+        "--fix",
+        "a=2",
+        "--momenta-degree",
+        "1",
+        "--positions-degree",
+        "1",
+        "--denominators-degree",
+        "0",
+    ]);
+    assert!(
+        normalize(&stdout).contains("which the flow of H keeps ({P, H} is a multiple of P)"),
+        "{stdout}"
+    );
 }

@@ -959,7 +959,7 @@ impl OnLevel {
             Ok(_) if flow_is_multiple(&flow, &p, &dividing)? => Some(p.clone()),
             _ => None,
         };
-        let kept_for_every_value = symbolic.is_some() || flow.is_zero();
+        let kept_for_every_value = symbolic.is_some() || flow.vanishes()?;
         let fixed = fix_parameters(&p, parameters)?;
         let (_, lead) = fixed.leading_term(&order).map_err(|e| refusal(&fixed, e))?;
         Ok(OnLevel {
