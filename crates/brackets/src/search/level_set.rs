@@ -568,7 +568,15 @@ impl std::fmt::Display for BesideLevelSet {
 /// Where a relation does hold a variable of `P`, the normal forms modulo `P` alone are not
 /// those modulo `P` and the relation: in the Laurent ring of `β/x²`, `x·p_y` and `p_y` span the
 /// same ideal, so `p_y = 0` on `x p_y = 0` is true where `H` is defined, and the remainder
-/// `p_y` would refute it.
+/// `p_y` would refute it. A claim's sides and the functions they name are held to the same
+/// rule ([`LevelSet::check_defined_on`]).
+///
+/// Not taken, a finer rule: `P` with no factor of the inverted variable (`x − 1` beside
+/// `β/x²`), where `x` is no zero divisor modulo `P`, so that `f ∈ (P)` exactly where
+/// `x^k f ∈ (P)` among polynomials (`1/x − 1` as `1 − x`). A claim could be decided so, its
+/// remainder then `x^k f`'s; a search cannot: the monomials `LM(P)` does not divide are a
+/// basis modulo `P` only among polynomials in `V(P)` (on `x = 1`, `1/x` and `1` are both left
+/// in, and `1/x − 1`, zero there, would be found as an integral).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct SharedVariable {
     /// `P`, as printed.
