@@ -55,6 +55,14 @@ fn load(name: &str, text: &str) -> Result<LoadedSystem, FileError> {
     load_system_text(name, text, &LimitsOverride::default())
 }
 
+/// `text`, whose last line is a claim's `on = "…"`, refused there (at its expression) with
+/// `message`.
+fn refused_at_the_on(name: &str, text: &str, message: &str) {
+    let err = load(name, text).expect_err("refused");
+    assert_eq!(err.line_col(), Some((text.lines().count(), 7)), "{err}");
+    assert!(err.message.contains(message), "{err}");
+}
+
 /// `a − b` is zero as a function (modulo the relations of the radicals and denominators).
 fn same(a: &trigpoly::Expr, b: &trigpoly::Expr) -> bool {
     a.checked_sub(b).unwrap().vanishes().unwrap()
@@ -68,12 +76,10 @@ fn same(a: &trigpoly::Expr, b: &trigpoly::Expr) -> bool {
 fn a_claim_on_a_level_set_sharing_a_variable_with_a_negative_power_is_refused() {
     let text =
         format!("{BARRIER}\n[[claim]]\nid = \"t\"\nclaim = \"p_y = 0\"\non = \"x*p_y = 0\"\n");
-    let err = load("barrier.toml", &text).expect_err("refused");
-    assert_eq!(err.line_col(), Some((text.lines().count(), 7)), "{err}");
-    assert!(
-        err.message
-            .contains("P = x p_y shares x with the negative power 1/x² of H"),
-        "{err}"
+    refused_at_the_on(
+        "barrier.toml",
+        &text,
+        "P = x p_y shares x with the negative power 1/x² of H",
     );
     // A level set of p_y alone, which no relation holds, is taken: p_y = 0 there, Q = 1.
     let text = format!("{BARRIER}\n[[claim]]\nid = \"t\"\nclaim = \"p_y = 0\"\non = \"p_y = 0\"\n");
@@ -163,12 +169,10 @@ fn claims_on_a_level_set_beside_a_radical_are_proved_and_refuted() {
     // The level x = 1 shares x with the radicand: refused where it is written.
     let text =
         format!("{KEPLER_AND_FREE_Z}\n[[claim]]\nclaim = \"{{z, H}} = 0\"\non = \"x = 1\"\n");
-    let err = load("kepler-z.toml", &text).expect_err("refused");
-    assert_eq!(err.line_col(), Some((text.lines().count(), 7)), "{err}");
-    assert!(
-        err.message
-            .contains("P = x − 1 shares x with the radicand x² + y² of the radical r"),
-        "{err}"
+    refused_at_the_on(
+        "kepler-z.toml",
+        &text,
+        "P = x − 1 shares x with the radicand x² + y² of the radical r",
     );
 }
 
@@ -403,6 +407,23 @@ const FREE_PAIR: &str = "name = \"free pair\"\n\
     [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\"]\n\
     denominators = [\"x - a\"]\n";
 
+/// `superint search` of [`FREE_PAIR`] (written in the scratch directory `dir`) with `options`,
+/// at momenta and positions degree 1 and no denominator: its output, exit 0.
+fn free_pair_search(dir: &str, options: &[&str]) -> String {
+    let file = scratch_text(dir, "pair.toml", FREE_PAIR);
+    let mut args = vec!["search", file.to_str().unwrap()];
+    args.extend(options);
+    args.extend([
+        "--momenta-degree",
+        "1",
+        "--positions-degree",
+        "1",
+        "--denominators-degree",
+        "0",
+    ]);
+    superint_ok(&args)
+}
+
 /// [`FREE_PAIR`], where `H`'s
 /// `y x/(x − a) − a y/(x − a) − y` is zero and `p_x x/(x − a) − a p_x/(x − a)` is `p_x`: at
 /// `a = 1` a remainder holding `1/(x − a)` is zero only with the atom's polynomial at that
@@ -412,19 +433,7 @@ const FREE_PAIR: &str = "name = \"free pair\"\n\
 /// the basis's `p_x` was refuted at `a = 1`.
 #[test]
 fn a_remainder_at_the_fixed_values_is_zero_with_the_atoms_at_them() {
-    let file = scratch_text("remainder-at-values", "pair.toml", FREE_PAIR);
-    let file = file.to_str().unwrap();
-    let degrees = [
-        "--momenta-degree",
-        "1",
-        "--positions-degree",
-        "1",
-        "--denominators-degree",
-        "0",
-    ];
-    let mut kept = vec!["search", file, "--on", "p_y = 0", "--fix", "a=1"];
-    kept.extend(degrees);
-    let stdout = superint_ok(&kept);
+    let stdout = free_pair_search("remainder-at-values", &["--on", "p_y = 0", "--fix", "a=1"]);
     assert!(stdout.contains("on the level set p_y = 0"), "{stdout}");
     // p_x among the basis, whose {p_x, H} = y/(x − a) − (x − a)y/(x − a)² is zero by hand.
     assert!(
@@ -432,17 +441,8 @@ fn a_remainder_at_the_fixed_values_is_zero_with_the_atoms_at_them() {
         "{stdout}"
     );
     let known = "p_x*x/(x - a) - a*p_x/(x - a)";
-    let mut with_known = vec![
-        "search",
-        file,
-        "--on",
-        "p_y = 0",
-        "--new-only",
-        "--known",
-        known,
-    ];
-    with_known.extend(degrees);
-    let stdout = superint_ok(&with_known);
+    let with_known = ["--on", "p_y = 0", "--new-only", "--known", known];
+    let stdout = free_pair_search("remainder-at-values", &with_known);
     assert!(stdout.contains("0 refuted"), "{stdout}");
 }
 
@@ -452,21 +452,8 @@ fn a_remainder_at_the_fixed_values_is_zero_with_the_atoms_at_them() {
 /// a parameter, said it kept at the fixed values alone.
 #[test]
 fn a_level_set_whose_flow_is_zero_by_the_relations_is_kept_for_every_value() {
-    let file = scratch_text("kept-for-every-value", "pair.toml", FREE_PAIR);
-    let stdout = superint_ok(&[
-        "search",
-        file.to_str().unwrap(),
-        "--on",
-        "a*p_y = 0",
-        "--fix",
-        "a=2",
-        "--momenta-degree",
-        "1",
-        "--positions-degree",
-        "1",
-        "--denominators-degree",
-        "0",
-    ]);
+    let on = ["--on", "a*p_y = 0", "--fix", "a=2"];
+    let stdout = free_pair_search("kept-for-every-value", &on);
     assert!(
         normalize(&stdout).contains("which the flow of H keeps ({P, H} is a multiple of P)"),
         "{stdout}"
