@@ -375,26 +375,36 @@ impl LevelSet {
         inputs: &[Input],
     ) -> Result<(), EngineError> {
         let dividing = self.division_order(system);
-        let named = (sides.iter().map(|side| (*side, "the claim".to_string()))).chain(
-            inputs.iter().map(|i| match &i.via {
-                Some(via) => (
-                    &i.value,
-                    format!("the claim's {via}, computed from {},", i.what),
-                ),
-                None => (&i.value, i.what.clone()),
-            }),
-        );
-        for (f, what) in named {
-            if let Some(v) = negative_power(f, &dividing) {
-                let p = self.polynomial()?;
-                let v = vars_name(f, v);
-                return Err(EngineError::Invalid(format!(
-                    "{what} divides by {v}, a variable of the level set's polynomial P = {p}: \
-                     it has no value where {v} = 0, and the claim, on the level set where \
-                     {v} ≠ 0, is not decided by dividing by P; take a level set of variables \
-                     that the claim does not divide by"
-                )));
-            }
+        let invalid = |m: String| Err(EngineError::Invalid(m));
+        let p = || self.polynomial();
+        if let Some((side, v)) =
+            (sides.iter()).find_map(|s| negative_power(s, &dividing).map(|v| (s, v)))
+        {
+            let v = vars_name(side, v);
+            return invalid(format!(
+                "the side {} has a negative power of {v}: a claim on a level set is decided by \
+                 dividing lhs − rhs by P = {}, which takes polynomials in P's variables, and the \
+                 claim has no value where {v} = 0, though lhs − rhs may cancel {v}; multiply \
+                 both sides by a power of {v}",
+                side.brief_excerpt(),
+                p()?
+            ));
+        }
+        if let Some((input, v)) =
+            (inputs.iter()).find_map(|i| negative_power(&i.value, &dividing).map(|v| (i, v)))
+        {
+            let v = vars_name(&input.value, v);
+            let what = match &input.via {
+                Some(via) => format!("the claim's {via} is computed from {}, which", input.what),
+                None => input.what.clone(),
+            };
+            return invalid(format!(
+                "{what} has a negative power of {v}, a variable of the level set's polynomial \
+                 P = {}: the claim has no value where {v} = 0, though lhs − rhs may cancel {v}, \
+                 and is not decided by dividing by P; take a level set of variables it does not \
+                 divide by",
+                p()?
+            ));
         }
         Ok(())
     }
