@@ -3705,8 +3705,8 @@ fn functions_of_the_angles_alone_generate_by_their_trigonometric_order() {
              that order) is generated when it is a sum of known integrals, constants and \
              products of integrals of grade below (N, k)",
             "the generated ones span 26 of the 30 dimensions",
-            "New integrals: I2 = cos a cos b + sin a sin b I3 = −cos a sin b + sin a cos b \
-             I6 = p_b I7 = p_a {I2, H} = 0",
+            // cos a cos b + sin a sin b and sin a cos b − cos a sin b, as a physicist writes them.
+            "New integrals: I2 = cos(a − b) I3 = sin(a − b) I6 = p_b I7 = p_a {I2, H} = 0",
         ] {
             assert!(text.contains(expected), "{text}");
         }

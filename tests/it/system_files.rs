@@ -3131,6 +3131,41 @@ fn expand_writes_a_long_left_side_on_lines_of_its_own() {
     );
 }
 
+/// Two rotors coupled by `ε cos(θ − φ)` (`systems/coupled-rotors.toml`): every claim holds
+/// as marked, the total momentum's conservation proved and `{p_θ, H} = 0` refuted; the
+/// coupling prints as a physicist writes it, `ε cos(θ − φ)`, in text, LaTeX and the JSON's
+/// ASCII, and the torque `{p_θ, H} = −∂H/∂θ = ε sin(θ − φ)` (by hand); with `--angles
+/// powers`, as the product of the two rotors' directions, as before.
+#[test]
+fn coupled_rotors_print_their_coupling_as_cos_of_the_difference() {
+    let f = "systems/coupled-rotors.toml";
+    let out = run(&["check", f], 0);
+    assert!(
+        out.contains("7 claims in 1 file: 6 proved, 1 refuted; all as expected"),
+        "{out}"
+    );
+    assert!(out.contains("residual lhs − rhs = ε sin(θ − φ)\n"), "{out}");
+    let out = run(&["expand", f, "V", "{p_theta, H}", "--no-timings"], 0);
+    assert!(out.contains("\n    V        = ε cos(θ − φ)\n"), "{out}");
+    assert!(out.contains("\n    {p_θ, H} = ε sin(θ − φ)\n"), "{out}");
+    let latex = run(&["expand", f, "V", "--format", "latex"], 0);
+    assert!(
+        latex.contains(r"\varepsilon \cos(\theta - \varphi)"),
+        "{latex}"
+    );
+    let v: Value =
+        serde_json::from_str(&run(&["expand", f, "V", "--format", "json"], 0)).expect("JSON");
+    assert_eq!(
+        v["equations"][0]["lines"][0]["ascii"],
+        "epsilon*cos(theta - phi)"
+    );
+    let powers = run(&["expand", f, "V", "--no-timings", "--angles", "powers"], 0);
+    assert!(
+        powers.contains("= ε cos θ cos φ + ε sin θ sin φ\n"),
+        "{powers}"
+    );
+}
+
 /// `expand` prints expressions in the normal form the claims are decided in: the Casimir
 /// relation C10 expands to zero, and so does not a wrong neighbour of it; a condition applies
 /// after the expansion.

@@ -445,9 +445,7 @@ fn fraction(group: &[&CosSinTerm], is_atom: &[bool]) -> (CosSinTerm, Vec<CosSinT
                 false => GaussianRational::from(&t.coeff.re / &content),
             },
             exps: (0..n).map(|j| t.exps[j] - front[j]).collect(),
-            trig: TrigMonomial {
-                powers: vec![(0, 0); first.trig.powers.len()],
-            },
+            trig: TrigMonomial::one(first.trig.powers.len()),
         })
         .collect();
     let outer = CosSinTerm {
@@ -611,6 +609,18 @@ struct Names {
 }
 
 impl Names {
+    /// Whether `trig` is a harmonic of several angles jointly, `cos(θ − φ)`, written with its
+    /// argument in parentheses.
+    fn is_joint_harmonic(&self, trig: &TrigMonomial) -> bool {
+        self.angle_form == Angles::Harmonics
+            && trig
+                .powers
+                .iter()
+                .filter(|&&(a, b)| a + b != 0)
+                .nth(1)
+                .is_some()
+    }
+
     fn new(vars: &VarSet, terms: &[CosSinTerm], style: Style, angle_form: Angles) -> Self {
         let names = vars
             .vars()
@@ -727,9 +737,32 @@ fn spellable(vars: &VarSet, terms: &[CosSinTerm]) -> Vec<String> {
 }
 
 /// The factors of a trigonometric monomial, each wide, into `product`: `cos^a θ sin^b θ`, or
-/// in harmonics `cos kθ` or `sin kθ` per angle ([`Poly::harmonic_terms`]).
+/// in harmonics `cos kθ` or `sin kθ`, `cos(kθ − lφ)` over several angles
+/// ([`Poly::harmonic_terms`]).
 fn write_trig_factors(out: &mut String, product: &mut Product, names: &Names, trig: &TrigMonomial) {
     let style = product.style;
+    if names.is_joint_harmonic(trig) {
+        let fun = match trig.powers.iter().any(|&(_, b)| b != 0) {
+            true => "sin",
+            false => "cos",
+        };
+        let multiples = (names.angles.iter().zip(&trig.powers).enumerate())
+            .filter(|(_, (_, &(a, b)))| a + b != 0)
+            .map(|(place, (&j, &(a, b)))| {
+                let k = i64::from(a + b);
+                let k = if trig.minus.contains(&place) { -k } else { k };
+                (names.names[j].as_str(), k)
+            });
+        product.next(out, true);
+        if style == Style::Latex {
+            out.push('\\');
+        }
+        out.push_str(fun);
+        out.push('(');
+        write_angle_sum(out, multiples, style);
+        out.push(')');
+        return;
+    }
     for (&j, &(a, b)) in names.angles.iter().zip(&trig.powers) {
         let name = &names.names[j];
         for (fun, e) in [("cos", a), ("sin", b)] {
@@ -759,6 +792,31 @@ fn write_trig_factors(out: &mut String, product: &mut Product, names: &Names, tr
             }
             out.push_str(name);
         }
+    }
+}
+
+/// `kθ − lφ` (`k`, `l` nonzero, the first of them positive): `2θ − 3φ`, `2\theta -
+/// 3\varphi`, `2*theta - 3*phi`, which parse back.
+pub(crate) fn write_angle_sum<'n>(
+    out: &mut String,
+    multiples: impl Iterator<Item = (&'n str, i64)>,
+    style: Style,
+) {
+    let start = out.len();
+    for (name, k) in multiples {
+        let first = out.len() == start;
+        match (first, k < 0) {
+            (true, false) => {}
+            (true, true) => out.push_str(minus(style)),
+            (false, false) => out.push_str(" + "),
+            (false, true) => write_display(out, format_args!(" {} ", minus(style))),
+        }
+        match (k.unsigned_abs(), style) {
+            (1, _) => {}
+            (n, Style::Ascii) => write_display(out, format_args!("{n}*")),
+            (n, _) => write_display(out, format_args!("{n}")),
+        }
+        out.push_str(name);
     }
 }
 
@@ -802,10 +860,11 @@ fn write_term(
         out.push_str(r"\frac{");
     }
     // `(p_x sin φ)/(Mω)`, not `p_x sin φ/(Mω)`, which reads as the sine of `φ/(Mω)`: text
-    // sets a numerator that ends in a bare `cos θ` or `sin θ` apart from its denominator.
+    // sets a numerator that ends in a bare `cos θ` or `sin θ` apart from its denominator
+    // (`cos(θ − φ)/2` ends in its own parenthesis).
     let enclosed = style == Style::Unicode
         && denominators > 0
-        && trig.is_some_and(|t| !TrigMonomial::is_one(t));
+        && trig.is_some_and(|t| !TrigMonomial::is_one(t) && !names.is_joint_harmonic(t));
     if enclosed {
         out.push('(');
     }

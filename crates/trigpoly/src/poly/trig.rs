@@ -83,9 +83,9 @@ impl<C: Coefficient> Poly<C> {
     /// A bound on the number of terms the element prints as, its angles in the form `angles`
     /// ([`Poly::harmonic_terms`] or [`Poly::cos_sin_terms`]), found without forming them: over
     /// the terms that share a monomial outside the angles, the smaller of `Σ Π n_k` (each
-    /// `e^{ikθ}` is `n_k` terms: `cos kθ` and `sin kθ`, 2 for `k ≠ 0`, in harmonics, and
-    /// `|k| + 1` terms `cos^j θ sin^b θ` in powers) and `Π (2K + 1)`, for the largest multiple
-    /// `K` of each angle among them.
+    /// `e^{ikθ}` is `|k| + 1` terms `cos^j θ sin^b θ` in powers) or, in harmonics, `Σ 2` (each
+    /// `e^{ik·θ}` is `cos(k·θ)` and `sin(k·θ)`, `1` for `k = 0`), and `Π (2K + 1)`, for the
+    /// largest multiple `K` of each angle among them.
     pub fn printed_terms_bound(&self, angles_form: Angles) -> u64 {
         let angles: Vec<usize> = self.vars.angles().map(|v| v.index()).collect();
         if angles.is_empty() {
@@ -104,11 +104,11 @@ impl<C: Coefficient> Poly<C> {
             let mut expansion = 1u64;
             for (a, &j) in angles.iter().enumerate() {
                 let k = layout.get(m, j).unsigned_abs();
-                let terms = match angles_form {
-                    Angles::Harmonics => 1 + u64::from(k != 0),
-                    Angles::Powers => k + 1,
-                };
-                expansion = expansion.saturating_mul(terms);
+                if angles_form == Angles::Powers {
+                    expansion = expansion.saturating_mul(k + 1);
+                } else if k != 0 {
+                    expansion = 2;
+                }
                 largest[a] = largest[a].max(k);
             }
             *sum = sum.saturating_add(expansion);
@@ -211,7 +211,7 @@ impl<C: Coefficient> Poly<C> {
     /// coefficients, so the sums are taken over Z\[i\] (no gcd per addition) and the content
     /// multiplies each surviving sum once.
     pub fn cos_sin_terms(&self) -> Vec<CosSinTerm> {
-        self.trig_terms(euler_powers)
+        self.trig_terms(Conversion::EachAngle(euler_powers))
     }
 
     /// The terms in the harmonic form `c · m · Π cos kθ` or `sin kθ` (`k ≥ 0` per angle, one
@@ -221,6 +221,13 @@ impl<C: Coefficient> Poly<C> {
     /// `(0, k)` for `sin kθ` (`(0, 0)` for an angle absent): `e^{ikθ} = cos kθ + i sin kθ`,
     /// read off the stored exponents, so nothing is linearised.
     ///
+    /// Over several angles the harmonics are those of the angles jointly, as a physicist
+    /// writes them: `e^{i(kθ + lφ)}` is `cos(kθ + lφ) + i sin(kθ + lφ)`, its multiples made
+    /// to start positive (`cos(θ − φ)`, never `cos(−θ + φ)`), where harmonics per angle wrote
+    /// `cos θ cos φ + sin θ sin φ`. Such a term holds every nonzero multiple in the same
+    /// place, `(|k|, 0)` per angle for a cosine, `(0, |k|)` for a sine, and the angles whose
+    /// multiple is negative in [`TrigMonomial::minus`].
+    ///
     /// ```
     /// use trigpoly::{Expr, Vars};
     /// let vars = Vars::builder().angle("theta").build().unwrap();
@@ -229,24 +236,20 @@ impl<C: Coefficient> Poly<C> {
     /// assert_eq!(powers, [(0, 0), (2, 0)]); // 1/2 + 1/2 cos 2θ
     /// ```
     pub fn harmonic_terms(&self) -> Vec<CosSinTerm> {
-        self.trig_terms(harmonic_parts)
+        match self.vars.angles().nth(1) {
+            None => self.trig_terms(Conversion::EachAngle(harmonic_parts)),
+            Some(_) => self.trig_terms(Conversion::Joint),
+        }
     }
 
-    /// The terms with each angle's `e^{ikθ}` written by the table that `tables` makes for the
-    /// multiples `k` that occur (sorted, each once): `(cos part, sin part, coefficient)`.
-    fn trig_terms(&self, tables: fn(&[i64]) -> TrigTables) -> Vec<CosSinTerm> {
+    /// The terms with the angles' `e^{ik·θ}` written as `conversion` says.
+    fn trig_terms(&self, conversion: Conversion) -> Vec<CosSinTerm> {
         let angles: Vec<usize> = self.vars.angles().map(|v| v.index()).collect();
         let n = self.vars.len();
         let layout = self.layout();
-        let mut multiples: Vec<i64> = (0..self.len())
-            .flat_map(|k| angles.iter().map(move |&j| layout.get(self.exp(k), j)))
-            .collect();
-        multiples.sort_unstable();
-        multiples.dedup();
-        let tables = tables(&multiples);
         // The sums are keyed by two numbers: the monomial in the variables (the angles'
         // exponents cleared once converted) and the trigonometric monomial (`(cos, sin)`
-        // powers per angle converted), each numbered once: a hash of two words per sum, where
+        // powers per angle converted, [`TrigMonomial::from_key`]), each numbered once: a hash of two words per sum, where
         // a vector of every exponent took a hash of the vector and an allocation.
         let mut groups = Numbering::<i64>::default();
         let mut trigs = Numbering::<u32>::default();
@@ -273,29 +276,54 @@ impl<C: Coefficient> Poly<C> {
         let mut index: FxHashMap<(u32, u32), u32> =
             FxHashMap::with_capacity_and_hasher(self.len(), Default::default());
         let mut sums: Vec<GaussianAcc> = Vec::with_capacity(self.len());
-        for (a, &j) in angles.iter().enumerate() {
-            index.clear();
-            sums.clear();
-            let mut powers = vec![0u32; 2 * angles.len()];
-            for (group, trig, coeff) in &entries {
-                exps.clone_from(&groups.values[*group as usize]);
-                let row = &tables[&std::mem::take(&mut exps[j])];
-                let group = groups.number(&exps);
-                powers.clone_from(&trigs.values[*trig as usize]);
-                for (cos, sin, x) in row {
-                    (powers[2 * a], powers[2 * a + 1]) = (*cos, *sin);
-                    let trig = trigs.number(&powers);
-                    sum_at(&mut index, &mut sums, (group, trig)).add_mul(coeff, x);
+        match conversion {
+            Conversion::Joint => {
+                // Each term's `e^{ik·θ}` at once, `cos(k·θ) ± i sin(k·θ)`.
+                for (group, _, coeff) in &entries {
+                    exps.clone_from(&groups.values[*group as usize]);
+                    let k: Vec<i64> = angles
+                        .iter()
+                        .map(|&j| std::mem::take(&mut exps[j]))
+                        .collect();
+                    let group = groups.number(&exps);
+                    for (key, x) in joint_harmonic(&k) {
+                        let trig = trigs.number(&key);
+                        sum_at(&mut index, &mut sums, (group, trig)).add_mul(coeff, &x);
+                    }
                 }
             }
-            if a + 1 < angles.len() {
-                entries = index
-                    .drain()
-                    .filter_map(|((group, trig), slot)| {
-                        let sum = std::mem::take(&mut sums[slot as usize]).finish();
-                        (!sum.is_zero()).then_some((group, trig, sum))
-                    })
+            Conversion::EachAngle(tables) => {
+                let mut multiples: Vec<i64> = (0..self.len())
+                    .flat_map(|k| angles.iter().map(move |&j| layout.get(self.exp(k), j)))
                     .collect();
+                multiples.sort_unstable();
+                multiples.dedup();
+                let tables = tables(&multiples);
+                for (a, &j) in angles.iter().enumerate() {
+                    index.clear();
+                    sums.clear();
+                    let mut powers = vec![0u32; 2 * angles.len()];
+                    for (group, trig, coeff) in &entries {
+                        exps.clone_from(&groups.values[*group as usize]);
+                        let row = &tables[&std::mem::take(&mut exps[j])];
+                        let group = groups.number(&exps);
+                        powers.clone_from(&trigs.values[*trig as usize]);
+                        for (cos, sin, x) in row {
+                            (powers[2 * a], powers[2 * a + 1]) = (*cos, *sin);
+                            let trig = trigs.number(&powers);
+                            sum_at(&mut index, &mut sums, (group, trig)).add_mul(coeff, x);
+                        }
+                    }
+                    if a + 1 < angles.len() {
+                        entries = index
+                            .drain()
+                            .filter_map(|((group, trig), slot)| {
+                                let sum = std::mem::take(&mut sums[slot as usize]).finish();
+                                (!sum.is_zero()).then_some((group, trig, sum))
+                            })
+                            .collect();
+                    }
+                }
             }
         }
         if angles.is_empty() {
@@ -310,9 +338,7 @@ impl<C: Coefficient> Poly<C> {
         let trig_monomials: Vec<TrigMonomial> = trigs
             .values
             .iter()
-            .map(|powers| TrigMonomial {
-                powers: powers.chunks_exact(2).map(|p| (p[0], p[1])).collect(),
-            })
+            .map(|key| TrigMonomial::from_key(key, angles.len()))
             .collect();
         let trig_rank = ranks(&trig_monomials, |t| t.sort_key());
         let group_rank = ranks(&groups.values, |exps| order.key(exps));
@@ -404,7 +430,7 @@ fn ranks<T, K: Ord>(items: &[T], key: impl Fn(&T) -> K) -> Vec<u32> {
 
 /// [`TrigMonomial`]'s order as a key (computed once per trigonometric monomial when terms
 /// are sorted).
-type TrigKey = (u32, Vec<(u32, u32)>);
+type TrigKey = (u32, Vec<(u32, u32)>, Vec<usize>);
 
 /// Distinct vectors numbered in the order they come: a vector is copied once, when it is new.
 struct Numbering<T> {
@@ -467,6 +493,36 @@ fn sum_at<'s>(
         sums.len() as u32 - 1
     });
     &mut sums[slot as usize]
+}
+
+/// How [`Poly::trig_terms`] writes the angles' `e^{ik·θ}`.
+enum Conversion {
+    /// One angle after another, each `e^{ikθ}` by the table the function makes.
+    EachAngle(fn(&[i64]) -> TrigTables),
+    /// All the angles at once, as harmonics of the angles jointly (`cos(θ − φ)`).
+    Joint,
+}
+
+/// `e^{ik·θ}` over the angles jointly: `cos(k·θ) + i sin(k·θ)` with `k` made to start
+/// positive (`cos(k·θ) − i sin(k·θ)` for `−k`), `1` alone for `k = 0`: the keys of the
+/// trigonometric monomials ([`TrigMonomial::from_key`]) with their coefficients.
+fn joint_harmonic(k: &[i64]) -> Vec<(Vec<u32>, GaussianInteger)> {
+    let n = k.len();
+    let one = GaussianInteger::from_integer(Integer::ONE);
+    let sign = k.iter().find(|&&m| m != 0).map_or(0, |m| m.signum());
+    let key = |place: usize| -> Vec<u32> {
+        let mut key = vec![0u32; 3 * n];
+        for (a, &m) in k.iter().enumerate() {
+            key[2 * a + place] = m.unsigned_abs() as u32;
+            key[2 * n + a] = u32::from(m * sign < 0);
+        }
+        key
+    };
+    match sign {
+        0 => vec![(key(0), one)],
+        1 => vec![(key(0), one.clone()), (key(1), one.mul_i())],
+        _ => vec![(key(0), one.clone()), (key(1), one.mul_i().conj())],
+    }
 }
 
 /// For each multiple `k`, the terms `(cos part, sin part, coefficient)` that `e^{ikθ}` is
@@ -545,15 +601,37 @@ fn euler_powers(multiples: &[i64]) -> TrigTables {
     tables
 }
 
-/// A product `Π cos^a θ sin^b θ` over the angles of a variable set, in their order; ordered
-/// for printing: fewer factors first, cosines before sines.
+/// A product `Π cos^a θ sin^b θ` over the angles of a variable set, in their order, or in
+/// harmonics `cos kθ`, `sin kθ`, or over several angles jointly `cos(kθ − lφ)`
+/// ([`Poly::harmonic_terms`]); ordered for printing: fewer factors first, cosines before sines.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct TrigMonomial {
     /// `(a, b)` per angle.
     pub powers: Vec<(u32, u32)>,
+    /// In harmonics of several angles, the angles (by their place among the angles, in
+    /// order) whose multiple the argument subtracts: `φ` in `cos(θ − φ)`. Empty otherwise.
+    pub minus: Vec<usize>,
 }
 
 impl TrigMonomial {
+    /// `1`, over `angles` angles.
+    pub fn one(angles: usize) -> Self {
+        TrigMonomial {
+            powers: vec![(0, 0); angles],
+            minus: Vec::new(),
+        }
+    }
+
+    /// The monomial of a key of [`Poly::trig_terms`]: `(a, b)` per angle, then, for harmonics
+    /// of the angles jointly, `1` per angle whose multiple is negative.
+    fn from_key(key: &[u32], angles: usize) -> Self {
+        let (powers, signs) = key.split_at(2 * angles);
+        TrigMonomial {
+            powers: powers.chunks_exact(2).map(|p| (p[0], p[1])).collect(),
+            minus: (0..signs.len()).filter(|&a| signs[a] != 0).collect(),
+        }
+    }
+
     /// Whether every power is zero.
     pub fn is_one(&self) -> bool {
         self.powers.iter().all(|&(a, b)| a == 0 && b == 0)
@@ -561,7 +639,8 @@ impl TrigMonomial {
 
     fn sort_key(&self) -> TrigKey {
         let degree = self.powers.iter().map(|&(a, b)| a + b).sum();
-        (degree, self.powers.iter().map(|&(a, b)| (b, a)).collect())
+        let powers = self.powers.iter().map(|&(a, b)| (b, a)).collect();
+        (degree, powers, self.minus.clone())
     }
 }
 
@@ -604,24 +683,13 @@ impl Harmonic {
     fn write(&self, vars: &VarSet, style: Style) -> String {
         let latex = style == Style::Latex;
         let minus = if latex { "-" } else { "−" };
+        let name = |v: Var| match latex {
+            true => vars.variable(v).latex(),
+            false => vars.variable(v).unicode(),
+        };
         let mut argument = String::new();
-        for &(v, k) in &self.multiples {
-            let sign = match (argument.is_empty(), k < 0) {
-                (true, false) => String::new(),
-                (true, true) => minus.to_string(),
-                (false, false) => " + ".to_string(),
-                (false, true) => format!(" {minus} "),
-            };
-            let times = match k.abs() {
-                1 => String::new(),
-                n => n.to_string(),
-            };
-            let name = match latex {
-                true => vars.variable(v).latex(),
-                false => vars.variable(v).unicode(),
-            };
-            argument.push_str(&format!("{sign}{times}{name}"));
-        }
+        let multiples = self.multiples.iter().map(|&(v, k)| (name(v), k));
+        crate::print::write_angle_sum(&mut argument, multiples, style);
         let one_angle = matches!(self.multiples.as_slice(), [(_, 1)]);
         let function = match latex {
             true => format!("\\{}", self.function),

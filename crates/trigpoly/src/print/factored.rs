@@ -106,9 +106,7 @@ impl Factored {
                 false => GaussianRational::from(content),
             },
             exps: powers,
-            trig: TrigMonomial {
-                powers: vec![(0, 0); first.trig.powers.len()],
-            },
+            trig: TrigMonomial::one(first.trig.powers.len()),
         };
         Some(Factored {
             vars: vars.clone(),

@@ -108,11 +108,11 @@ fn harmonics_linearise_powers_of_cos_and_sin() {
             shown[0]
         );
     }
-    // Two angles: each one's harmonics multiplied, cos θ cos φ = (cos(θ + φ) + cos(θ − φ))/2
-    // left as it is.
+    // Two angles: their harmonics jointly, cos²θ cos φ = (1 + cos 2θ) cos φ/2 = cos φ/2 +
+    // (cos(2θ + φ) + cos(2θ − φ))/4.
     let vars = phase_space();
     let f: G = p(&vars, "cos(theta)^2*cos(phi)");
-    assert_eq!(f.to_string(), "(cos φ)/2 + (cos 2θ cos φ)/2");
+    assert_eq!(f.to_string(), "(cos φ)/2 + cos(2θ + φ)/4 + cos(2θ − φ)/4");
     assert_eq!(p::<GaussianRational>(&vars, &f.to_string()), f);
 }
 
@@ -643,7 +643,7 @@ fn two_angles_print_grouped_and_parse_back() {
         let text = f.to_ascii();
         assert_eq!(p::<GaussianRational>(&vars, &text), f, "{src}");
     }
-    prints(
+    prints_powers(
         &vars,
         "x*sin(phi) + y*cos(theta) + x*cos(theta) + cos(theta)*cos(phi) + 3",
         [
@@ -652,6 +652,71 @@ fn two_angles_print_grouped_and_parse_back() {
             "3 + x*sin(phi) + (x + y)*cos(theta) + cos(theta)*cos(phi)",
         ],
     );
+}
+
+/// Over two angles the harmonics are those of the angles jointly, as a physicist writes them:
+/// `cos θ cos φ + sin θ sin φ = cos(θ − φ)`, its multiples made to start positive (`cos(−θ +
+/// φ)` is `cos(θ − φ)`, `sin(−θ + φ)` is `−sin(θ − φ)`), a single angle's as before (`cos 2θ`),
+/// in all three notations, each parsing back; in powers, the old form. Each expected form is
+/// worked by hand: `cos θ cos φ = (cos(θ + φ) + cos(θ − φ))/2`, `sin θ cos φ = (sin(θ + φ) +
+/// sin(θ − φ))/2`.
+#[test]
+fn two_angles_print_as_harmonics_of_the_angles_jointly() {
+    let vars = phase_space();
+    prints(
+        &vars,
+        "cos(theta)*cos(phi) + sin(theta)*sin(phi)",
+        ["cos(θ − φ)", r"\cos(\theta - \varphi)", "cos(theta - phi)"],
+    );
+    prints(
+        &vars,
+        "cos(-theta + phi) - sin(phi - theta)",
+        [
+            "cos(θ − φ) + sin(θ − φ)",
+            r"\cos(\theta - \varphi) + \sin(\theta - \varphi)",
+            "cos(theta - phi) + sin(theta - phi)",
+        ],
+    );
+    // A polynomial coefficient, a harmonic of one angle among them, and larger multiples.
+    prints(
+        &vars,
+        "(x + p_x)*(cos(theta)*cos(phi) + sin(theta)*sin(phi)) + y*cos(2*theta) \
+         - 3*x*sin(-2*theta + 3*phi)",
+        [
+            "(p_x + x) cos(θ − φ) + y cos 2θ + 3x sin(2θ − 3φ)",
+            r"\left(p_{x} + x\right) \cos(\theta - \varphi) + y \cos 2\theta + 3 x \sin(2\theta - 3\varphi)",
+            "(p_x + x)*cos(theta - phi) + y*cos(2*theta) + 3*x*sin(2*theta - 3*phi)",
+        ],
+    );
+    prints(
+        &vars,
+        "2*x*cos(theta)*cos(phi) + 2*sin(theta)*cos(phi)",
+        [
+            "x cos(θ + φ) + x cos(θ − φ) + sin(θ + φ) + sin(θ − φ)",
+            r"x \cos(\theta + \varphi) + x \cos(\theta - \varphi) + \sin(\theta + \varphi) + \sin(\theta - \varphi)",
+            "x*cos(theta + phi) + x*cos(theta - phi) + sin(theta + phi) + sin(theta - phi)",
+        ],
+    );
+    // In powers, the product of each angle's part, as before.
+    prints_powers(
+        &vars,
+        "(x + p_x)*(cos(theta)*cos(phi) + sin(theta)*sin(phi))",
+        [
+            "(p_x + x) cos θ cos φ + (p_x + x) sin θ sin φ",
+            r"\left(p_{x} + x\right) \cos\theta \cos\varphi + \left(p_{x} + x\right) \sin\theta \sin\varphi",
+            "(p_x + x)*cos(theta)*cos(phi) + (p_x + x)*sin(theta)*sin(phi)",
+        ],
+    );
+    // Every notation reads back, LaTeX too.
+    for src in [
+        "cos(2*theta - 3*phi)/5 + x*sin(theta + phi)",
+        "sin(theta - phi)^3",
+    ] {
+        let f: G = p(&vars, src);
+        for text in [f.to_string(), f.to_latex(), f.to_ascii()] {
+            assert_eq!(p::<GaussianRational>(&vars, &text), f, "{src}: {text}");
+        }
+    }
 }
 
 /// A name before parentheses is a product, as the paper and the claims' echo write it

@@ -886,15 +886,17 @@ proptest! {
         }
     }
 
-    /// Either form of the angles, harmonics (`cos 2θ`, `cos(2*theta)`) and powers (`cos²θ`,
-    /// `cos(theta)^2`), in ASCII and in unicode text, parses back to the same element: an
-    /// independent check of the printer's conversion, which the parser does not share. The
-    /// harmonic form has no higher power of a cosine or a sine than the first.
+    /// Either form of the angles, harmonics (`cos 2θ`, `cos(2*theta)`, over the two angles
+    /// jointly `cos(2θ − 3φ)`) and powers (`cos²θ`, `cos(theta)^2`), in ASCII, unicode text
+    /// and LaTeX, parses back to the same element: an independent check of the printer's
+    /// conversion, which the parser does not share. The harmonic form has no higher power of
+    /// a cosine or a sine than the first, no product of the two angles' functions, and no
+    /// argument that starts negative.
     #[test]
     fn both_forms_of_the_angles_parse_back(f in gpoly(9)) {
         let vars = phase_space();
         for angles in Angles::ALL {
-            for style in [Style::Ascii, Style::Unicode] {
+            for style in Style::ALL {
                 let text = f.render_with(style, angles);
                 match G::parse(&vars, &text) {
                     Ok(back) => prop_assert_eq!(back, f.clone(), "{}", text),
@@ -904,6 +906,8 @@ proptest! {
         }
         let text = f.render_with(Style::Ascii, Angles::Harmonics);
         prop_assert!(!text.contains("theta)^") && !text.contains("phi)^"), "{}", text);
+        prop_assert!(!text.contains("theta)*cos(") && !text.contains("theta)*sin("), "{}", text);
+        prop_assert!(!text.contains("cos(-") && !text.contains("sin(-"), "{}", text);
     }
 
     /// Where one-letter names side by side spell other names (`xy`, `yx`, `ab`, and `xi` with
