@@ -342,20 +342,10 @@ fn level_set(
     let value = subject
         .listed_error("--on", text, rhs.clone())
         .map_err(place)?;
-    let vars = subject.system().vars();
-    if let Some(v) = vars
-        .vars()
-        .find(|&v| value.contains(v) && vars.variable(v).kind() != VarKind::Parameter)
-    {
-        return Err(refuse(
-            rhs,
-            format!(
-                "the value holds {}: it must be a constant (numbers and parameters)",
-                vars.variable(v).unicode()
-            ),
-        ));
-    }
     let level = brackets::search::LevelSet::new(text, expr, value);
+    if let Err(e) = level.check_value(subject.system()) {
+        return Err(refuse(rhs, e.to_string()));
+    }
     let checked = match searched_for {
         Some(parameter) => level.check_for_values_of(subject.system(), fixed, parameter, laurent),
         None => level.check(subject.system(), fixed, laurent),

@@ -457,3 +457,117 @@ fn a_level_set_whose_flow_is_zero_by_the_relations_is_kept_for_every_value() {
         "{stdout}"
     );
 }
+
+/// An oscillator beside a rotor whose speed holds the parameter `κ`, the denominator `κ + 1`
+/// declared: with `K = (x + i p_x) e^{iθ}`, `R = Re K`, `C = Im K`, by hand
+/// `{x + i p_x, H} = −i(x + i p_x)` and `{e^{iθ}, H} = i(κ + 1) p_θ e^{iθ}`, so
+/// `{K, H} = iK((κ + 1) p_θ − 1)`, and `{C, H} = R((κ + 1) p_θ − 1)`: conserved on
+/// `p_θ = 1/(κ + 1)`, where `{C, H} = (κ + 1) R (p_θ − 1/(κ + 1))`.
+const KAPPA_ROTOR: &str = r#"name = "kappa rotor"
+hamiltonian = "(p_x^2 + x^2)/2 + (kappa + 1)*p_theta^2/2"
+
+[phase_space]
+coordinates = ["x"]
+angles = ["theta"]
+parameters = ["kappa"]
+denominators = ["kappa + 1"]
+
+[[function]]
+name = "R"
+value = "x*cos(theta) - p_x*sin(theta)"
+
+[[function]]
+name = "C"
+value = "x*sin(theta) + p_x*cos(theta)"
+"#;
+
+/// A level set's value may hold a declared denominator of parameters alone: `P = p_θ − D`,
+/// `D = 1/(κ + 1)` one of its coefficients, `LM(P) = p_θ` with 1 for coefficient. Before, it
+/// was refused as no constant. `{C, H} = 0` on `p_θ = 1/(κ + 1)` is proved for every `κ` with
+/// the quotient `(κ + 1) R` derived by hand ([`KAPPA_ROTOR`]); as the claim on `p_θ = 1/2` at
+/// `κ = 1`, with the quotient `2R`; and on `p_θ = 1/2` for every `κ` it is refuted with the
+/// remainder `R((κ + 1)/2 − 1) = (κ − 1) R/2`.
+#[test]
+fn a_claim_on_a_level_set_whose_value_holds_a_denominator_of_parameters_is_decided() {
+    let claims = "\n[[claim]]\nid = \"on\"\nclaim = \"{C, H} = 0\"\n\
+                  on = \"p_theta = 1/(kappa + 1)\"\n\
+                  \n[[claim]]\nid = \"at\"\nclaim = \"{C, H} = 0\"\nwhen = \"kappa = 1\"\n\
+                  on = \"p_theta = 1/(kappa + 1)\"\n\
+                  \n[[claim]]\nid = \"written\"\nclaim = \"{C, H} = 0\"\nwhen = \"kappa = 1\"\n\
+                  on = \"p_theta = 1/2\"\n\
+                  \n[[claim]]\nid = \"other\"\nclaim = \"{C, H} = 0\"\n\
+                  on = \"p_theta = 1/2\"\nexpect = \"refuted\"\n";
+    let file = load("kappa-rotor.toml", &format!("{KAPPA_ROTOR}{claims}")).expect("loads");
+    let report = check_report([&file]).expect("checked");
+    assert!(report.all_as_expected());
+    let p = |s: &str| file.system().parse(s).expect("parses");
+    let quotient = |id: &str| {
+        let claim = claim_of(&report, id);
+        assert!(claim.proved, "{claim:?}");
+        claim
+            .on_level
+            .as_ref()
+            .unwrap()
+            .quotient
+            .clone()
+            .expect("Q")
+    };
+    assert!(same(&quotient("on"), &p("(kappa + 1)*R")));
+    assert!(same(&quotient("at"), &p("2*R")));
+    assert!(same(&quotient("written"), &p("2*R")));
+    let r = claim_of(&report, "other")
+        .residual
+        .clone()
+        .expect("a remainder");
+    assert!(same(&r, &p("(kappa - 1)*R/2")), "{r}");
+}
+
+/// `search --on 'p_theta = 1/(kappa + 1)' --fix kappa=1` finds what `--on 'p_theta = 1/2'`
+/// finds at `κ = 1`: `1`, `R` and `C` ([`KAPPA_ROTOR`]), each proved on the level set.
+#[test]
+fn a_search_on_a_level_set_whose_value_holds_a_denominator_of_parameters() {
+    let path = scratch_text("level-sets-relations", "kappa-rotor.toml", KAPPA_ROTOR);
+    let run = |value: &str| {
+        let on = format!("p_theta = {value}");
+        superint_json(&[
+            "search",
+            path.to_str().unwrap(),
+            "--on",
+            &on,
+            "--fix",
+            "kappa=1",
+            "--momenta-degree",
+            "1",
+            "--positions-degree",
+            "1",
+            "--trig-degree",
+            "1",
+        ])
+    };
+    let (symbolic, written) = (run("1/(kappa + 1)"), run("1/2"));
+    let dimension = |json: &serde_json::Value| json["searches"][0]["dimension"].clone();
+    assert_eq!(dimension(&symbolic), 3, "{symbolic}");
+    assert_eq!(dimension(&symbolic), dimension(&written));
+    let proved = |json: &serde_json::Value| {
+        json["claims"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|c| c["outcome"] == "proved")
+            .count()
+    };
+    assert_eq!(proved(&symbolic), 3, "{symbolic}");
+    // Its polynomial holds κ through the atom: the values of κ are not searched on it.
+    let stderr = superint_refused(&[
+        "search",
+        path.to_str().unwrap(),
+        "--on",
+        "p_theta = 1/(kappa + 1)",
+        "--find-values",
+        "kappa",
+    ]);
+    assert!(
+        stderr.contains("a level set whose polynomial holds kappa"),
+        "{stderr}"
+    );
+}

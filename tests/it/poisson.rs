@@ -983,7 +983,7 @@ fn a_level_set_the_search_cannot_take_is_refused_in_place() {
         (
             top,
             "gamma1 = M1",
-            "<command line>:1:10: --on: the value holds M1: it must be a constant",
+            "<command line>:1:10: --on: the level set's value holds M1: it must be a constant",
         ),
         (
             top,

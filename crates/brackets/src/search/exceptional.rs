@@ -769,7 +769,8 @@ fn refuse(system: &System, options: &SearchOptions, parameter: Var) -> Result<()
     let name = vars.variable(parameter).name();
     let space = system.space();
     // Held by H as written (a condition that sets the parameter is refused below, for that),
-    // or by H under the condition.
+    // or by H under the condition; by a level set too, through its value's atoms
+    // (`1/(κ + 1)`).
     let holds = |h: &Expr| {
         let symbol_holds = |symbols: &[(Var, Expr)]| {
             (symbols.iter()).any(|(v, e)| e.contains(parameter) && h.contains(*v))
@@ -786,7 +787,7 @@ fn refuse(system: &System, options: &SearchOptions, parameter: Var) -> Result<()
     } else if let Some(level) = options
         .on
         .as_ref()
-        .filter(|l| l.polynomial().is_ok_and(|p| p.contains(parameter)))
+        .filter(|l| l.polynomial().is_ok_and(|p| holds(&p)))
     {
         Some(format!(
             "a level set whose polynomial holds {name}, {}: a level set is taken at the fixed \

@@ -323,18 +323,21 @@ impl LevelSet {
         Ok(())
     }
 
-    /// Refuses a value that holds a phase variable: a level's value is a constant (numbers
-    /// and parameters). Part of [`LevelSet::check`], for a caller that places this refusal at
-    /// the value and the others at the expression.
+    /// Refuses a value that holds a phase variable: a level's value is a constant of the
+    /// parameters, numbers, parameters, and the declared denominators and radicals of
+    /// parameters alone (`1/(κ + 1)`, [`is_constant_of_parameters`]). Such an atom is one of
+    /// `P`'s coefficients: the ring is (parameters, their atoms) ⊗ (phase variables), and
+    /// `LM(P)` still has a number as coefficient. Part of [`LevelSet::check`], for a caller
+    /// that places this refusal at the value and the others at the expression.
     pub fn check_value(&self, system: &System) -> Result<(), EngineError> {
         let vars = system.vars();
         match vars
             .vars()
-            .find(|&v| self.value.contains(v) && vars.variable(v).kind() != VarKind::Parameter)
+            .find(|&v| self.value.contains(v) && !is_constant_of_parameters(system, v))
         {
             Some(v) => Err(EngineError::Invalid(format!(
-                "the level set's value holds {}: it must be a constant (numbers and \
-                 parameters)",
+                "the level set's value holds {}: it must be a constant (numbers, parameters, \
+                 and denominators and radicals of parameters alone)",
                 vars.variable(v).unicode()
             ))),
             None => Ok(()),
@@ -882,6 +885,26 @@ fn is_excluded(kind: VarKind) -> bool {
         kind,
         VarKind::Angle | VarKind::Denominator | VarKind::Radical
     )
+}
+
+/// `v` is a parameter, or a declared denominator or radical whose polynomial holds
+/// parameters alone (`1/(κ + 1)`, `√κ`): a constant wherever the parameters have values.
+fn is_constant_of_parameters(system: &System, v: Var) -> bool {
+    let vars = system.vars();
+    let space = system.space();
+    let of_parameters = |d: &Expr| {
+        vars.vars()
+            .all(|w| !d.contains(w) || vars.variable(w).kind() == VarKind::Parameter)
+    };
+    match vars.variable(v).kind() {
+        VarKind::Parameter => true,
+        VarKind::Denominator | VarKind::Radical => space
+            .denominator_atoms()
+            .iter()
+            .chain(space.radicals())
+            .any(|(atom, d)| *atom == v && of_parameters(d)),
+        _ => false,
+    }
 }
 
 /// `f` divided by `p` in `order`, a refusal of `p` said in words. A dividend with a negative
