@@ -1143,7 +1143,8 @@ fn a_search_on_a_level_set_refuses_negative_powers_rather_than_misjudge_them() {
     assert_eq!(o.status.code(), Some(2), "{stderr}");
     assert!(
         stderr.contains("<command line>:1:1: --known: K + A/γ1 is not taken on the level set")
-            && stderr.contains("negative power of γ1")
+            && stderr.contains("negative power of γ1, a variable of the level set's polynomial P")
+            && stderr.contains("leave it out of --known, or take a level set of variables")
             && !stderr.contains("is not an integral"),
         "{stderr}"
     );

@@ -918,9 +918,10 @@ pub(super) fn p_divide(
 ) -> Result<Division<trigpoly::GaussianRational>, EngineError> {
     if let Some(v) = negative_power(f, order) {
         return Err(EngineError::Invalid(format!(
-            "{} has a negative power of {v}: whether it is a multiple of the level set's \
-             polynomial P = {p} is decided by dividing polynomials; multiply it by a power of \
-             {v}",
+            "{} has a negative power of {v}, a variable of the level set's polynomial P = {p}: \
+             whether it is a multiple of P is decided by dividing polynomials in P's \
+             variables, and it has no value where {v} = 0; take a level set of variables that \
+             it does not divide by",
             f.brief_excerpt(),
             v = vars_name(f, v)
         )));

@@ -654,8 +654,10 @@ pub(super) fn refuse_given_known(
             {
                 return Err(refused(format!(
                     "is not taken on the level set {}: it or its bracket with H has a negative \
-                     power of {v}, and a known integral there is taken modulo the level set's \
-                     polynomial by dividing polynomials",
+                     power of {v}, a variable of the level set's polynomial P, and a known \
+                     integral there is taken modulo P by dividing polynomials in P's \
+                     variables; leave it out of --known, or take a level set of variables that \
+                     it does not divide by",
                     options.on.as_ref().map_or("", |l| l.text.as_str())
                 )));
             }
