@@ -598,6 +598,9 @@ pub struct SharedVariable {
     pub variable: String,
     /// The relation that holds it, in words (`the negative power 1/x² of H`).
     pub relation: String,
+    /// Whether that relation is the negative powers that a Laurent space admits (`--laurent`),
+    /// which a search without it does not take.
+    pub laurent: bool,
 }
 
 impl SharedVariable {
@@ -608,28 +611,31 @@ impl SharedVariable {
         let vars = system.vars();
         let space = system.space();
         let h = system.hamiltonian();
-        let relation = |v: Var| -> Option<String> {
+        // The relation, in words, and whether it is the Laurent space's.
+        let relation = |v: Var| -> Option<(String, bool)> {
             let name = vars.variable(v).unicode();
             if let Some((_, d)) = space
                 .denominator_atoms()
                 .iter()
                 .find(|(_, d)| d.contains(v))
             {
-                return Some(format!("the denominator {d}"));
+                return Some((format!("the denominator {d}"), false));
             }
             if let Some((r, radicand)) = space.radicals().iter().find(|(_, d)| d.contains(v)) {
                 let r = vars.variable(*r).unicode();
-                return Some(format!("the radicand {radicand} of the radical {r}"));
+                return Some((format!("the radicand {radicand} of the radical {r}"), false));
             }
             if let Some((lowest, _)) = h.exponent_range(v).filter(|(lo, _)| *lo < 0) {
                 let mut exponents = vec![0; vars.len()];
                 exponents[v.index()] = lowest;
                 let power = Expr::from_terms(vars, [(Rational::one().into(), exponents)])
                     .map_or_else(|_| format!("{name}^{lowest}"), |m| m.to_string());
-                return Some(format!("the negative power {power} of H"));
+                return Some((format!("the negative power {power} of H"), false));
             }
-            (laurent && vars.variable(v).kind() == VarKind::Coordinate)
-                .then(|| format!("the negative powers of {name} that a Laurent space admits"))
+            (laurent && vars.variable(v).kind() == VarKind::Coordinate).then(|| {
+                let powers = format!("the negative powers of {name} that a Laurent space admits");
+                (powers, true)
+            })
         };
         let order = LevelSet::order(system);
         order
@@ -637,10 +643,11 @@ impl SharedVariable {
             .iter()
             .filter(|&&v| p.contains(v))
             .find_map(|&v| {
-                relation(v).map(|relation| SharedVariable {
+                relation(v).map(|(relation, laurent)| SharedVariable {
                     polynomial: p.to_string(),
                     variable: vars.variable(v).unicode().to_string(),
                     relation,
+                    laurent,
                 })
             })
     }
@@ -652,9 +659,17 @@ impl std::fmt::Display for SharedVariable {
             f,
             "the level set's polynomial P = {} shares {} with {}: the remainders on division \
              by P are the normal forms modulo P and the system's relations only where no \
-             declared denominator, radicand or negative power holds a variable of P; take a \
-             level set of variables that none of them holds",
-            self.polynomial, self.variable, self.relation
+             declared denominator, radicand or negative power holds a variable of P; {}",
+            self.polynomial,
+            self.variable,
+            self.relation,
+            match self.laurent {
+                true =>
+                    "take a level set of variables that no negative power involves (a \
+                         Laurent space admits them of every coordinate), or search without \
+                         --laurent",
+                false => "take a level set of variables that none of them holds",
+            }
         )
     }
 }
