@@ -7,7 +7,7 @@
 use superint::prelude::*;
 
 use crate::level_set_claims::claim_of;
-use crate::{normalize, scratch_text, superint_json, superint_ok, superint_refused};
+use crate::{normalize, scratch_text, superint_json, superint_ok, superint_refused, DEGREE_ONE};
 
 /// A rotor beside a Calogero pair in a harmonic trap, the denominator `x − y` declared:
 /// with `u = x − y`, `q = p_x − p_y` (`{u, q} = 2`), `A = (q + 2iu)² + 4g/u²` has
@@ -534,20 +534,16 @@ fn a_search_on_a_level_set_whose_value_holds_a_denominator_of_parameters() {
     let path = scratch_text("level-sets-relations", "kappa-rotor.toml", KAPPA_ROTOR);
     let run = |value: &str| {
         let on = format!("p_theta = {value}");
-        superint_json(&[
+        let mut args = vec![
             "search",
             path.to_str().unwrap(),
             "--on",
             &on,
             "--fix",
             "kappa=1",
-            "--momenta-degree",
-            "1",
-            "--positions-degree",
-            "1",
-            "--trig-degree",
-            "1",
-        ])
+        ];
+        args.extend(DEGREE_ONE);
+        superint_json(&args)
     };
     let (symbolic, written) = (run("1/(kappa + 1)"), run("1/2"));
     let dimension = |json: &serde_json::Value| json["searches"][0]["dimension"].clone();

@@ -325,7 +325,7 @@ impl LevelSet {
 
     /// Refuses a value that holds a phase variable: a level's value is a constant of the
     /// parameters, numbers, parameters, and the declared denominators and radicals of
-    /// parameters alone (`1/(κ + 1)`, [`is_constant_of_parameters`]). Such an atom is one of
+    /// parameters alone (`1/(κ + 1)`, `is_constant_of_parameters`). Such an atom is one of
     /// `P`'s coefficients: the ring is (parameters, their atoms) ⊗ (phase variables), and
     /// `LM(P)` still has a number as coefficient. Part of [`LevelSet::check`], for a caller
     /// that places this refusal at the value and the others at the expression.
