@@ -528,7 +528,8 @@ fn a_claim_on_a_level_set_whose_value_holds_a_denominator_of_parameters_is_decid
 }
 
 /// `search --on 'p_theta = 1/(kappa + 1)' --fix kappa=1` finds what `--on 'p_theta = 1/2'`
-/// finds at `κ = 1`: `1`, `R` and `C` ([`KAPPA_ROTOR`]), each proved on the level set.
+/// finds at `κ = 1`: `1`, `R` and `C` ([`KAPPA_ROTOR`]), each proved on the level set, with
+/// no note that a normal form leaves the space.
 #[test]
 fn a_search_on_a_level_set_whose_value_holds_a_denominator_of_parameters() {
     let path = scratch_text("level-sets-relations", "kappa-rotor.toml", KAPPA_ROTOR);
@@ -558,6 +559,32 @@ fn a_search_on_a_level_set_whose_value_holds_a_denominator_of_parameters() {
             .count()
     };
     assert_eq!(proved(&symbolic), 3, "{symbolic}");
+    // `P` is divided at κ = 1 with the atom at its value, `p_θ − 1/2`: the normal form of
+    // `p_θ` is `1/2`, a number of the space, where it was the atom `1/(κ + 1)`, said outside it.
+    let level_set = |json: &serde_json::Value| json["searches"][0]["level_set"].clone();
+    assert!(
+        level_set(&symbolic)["normal_form_outside"].is_null(),
+        "{}",
+        level_set(&symbolic)
+    );
+    // The same integrals, term for term: `1`, `C` and `−R` (on `p_θ = 1/2` at `κ = 1`, θ turns
+    // at `(κ + 1) p_θ = 1`, as `(x, p_x)` does under `H`).
+    let basis = |json: &serde_json::Value| -> Vec<(String, String)> {
+        let equations = json["equations"].as_array().unwrap();
+        let lines = equations
+            .iter()
+            .find(|e| e["caption"] == "A basis of the integrals")
+            .expect("a basis")["lines"]
+            .as_array()
+            .unwrap();
+        let text = |v: &serde_json::Value| v.as_str().unwrap_or_default().to_string();
+        (lines.iter())
+            .map(|l| (text(&l["ascii"]), text(&l["in_functions"]["ascii"])))
+            .collect()
+    };
+    assert_eq!(basis(&symbolic), basis(&written));
+    let in_functions: Vec<String> = basis(&written).into_iter().map(|l| l.1).collect();
+    assert_eq!(in_functions, ["", "C", "-R"], "{written}");
     // Its polynomial holds κ through the atom: the values of κ are not searched on it.
     let stderr = superint_refused(&[
         "search",

@@ -95,6 +95,28 @@ pub(crate) fn vanishes_at_values(
     })
 }
 
+/// `e` with each declared denominator whose polynomial holds parameters alone at its value at
+/// the fixed `parameters`, the number [`Clearing`] takes it at there (the atom stands for its
+/// polynomial `D`, so `1/(κ + 1)` is `1/2` at `κ = 1`), refused where `D` is zero there and
+/// `e` divides by it. A search's level set whose value holds one is divided by this polynomial
+/// (`OnLevel`), so that the normal forms are written in the space's monomials, which hold no
+/// such atom (a number at those values). A radical of parameters is left as it is: it has no
+/// rational value in general, and the space holds its powers.
+pub(crate) fn parameter_atoms_at_values(
+    space: &PhaseSpace,
+    parameters: &[(Var, Rational)],
+    e: &Expr,
+) -> Result<Expr, EngineError> {
+    let atoms = space.denominator_atoms();
+    let mut values = Vec::new();
+    for ((v, d), n) in atoms.iter().zip(inverse_powers(atoms, &[e])) {
+        if e.contains(*v) && fix_parameters(d, parameters)?.is_constant() {
+            values.push((*v, atom_at_values(*v, d, n, parameters)?));
+        }
+    }
+    Ok(e.subst_many(&values)?)
+}
+
 /// The injective linear map the linear algebra takes its vectors through on a system with
 /// denominator atoms: `e ↦ (Π v_i^{N_i} · e)(v_i = D_i)`, each `N_i` at least the highest power
 /// of `1/D_i` among the vectors, so that every image is a polynomial. It is multiplication by

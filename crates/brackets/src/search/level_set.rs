@@ -34,7 +34,7 @@ use trigpoly::{
 };
 
 use crate::claim::Condition;
-use crate::clearing::vanishes_at_values;
+use crate::clearing::{parameter_atoms_at_values, vanishes_at_values};
 use crate::error::EngineError;
 use crate::inputs::Input;
 use crate::modular::{Field, Fp, PRIME};
@@ -983,7 +983,8 @@ fn refusal(p: &Expr, e: DivisionRefusal) -> EngineError {
 /// keeps it for every value of them, for the proofs of the integrals lifted; the order, and
 /// `LM(P)` at the fixed values.
 pub(super) struct OnLevel {
-    /// `P` at the fixed values.
+    /// `P` at the fixed values, its declared denominators of parameters alone at theirs too
+    /// (`p_θ − 1/2` for `p_θ − 1/(κ + 1)` at `κ = 1`), as the space's monomials hold them.
     pub(super) fixed: Expr,
     /// `P` with its parameters, where its leading coefficient is a number and `{P, H}` a
     /// multiple of it with them: elsewhere an integral holds on the level set at the fixed
@@ -1018,6 +1019,7 @@ impl OnLevel {
         };
         let kept_for_every_value = symbolic.is_some() || flow.vanishes()?;
         let fixed = fix_parameters(&p, parameters)?;
+        let fixed = parameter_atoms_at_values(system.space(), parameters, &fixed)?;
         let (_, lead) = fixed.leading_term(&order).map_err(|e| refusal(&fixed, e))?;
         Ok(OnLevel {
             fixed,
