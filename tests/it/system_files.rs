@@ -3145,7 +3145,12 @@ fn coupled_rotors_print_their_coupling_as_cos_of_the_difference() {
         "{out}"
     );
     assert!(out.contains("residual lhs − rhs = ε sin(θ − φ)\n"), "{out}");
-    let out = run(&["expand", f, "V", "{p_theta, H}", "--no-timings"], 0);
+    let out = run(&["expand", f, "H", "V", "{p_theta, H}", "--no-timings"], 0);
+    // The moments of inertia print as the header writes them, `I₁`, `I₂`.
+    assert!(
+        out.contains("\n    H        = p_θ²/(2 I₁) + p_φ²/(2 I₂) + ε cos(θ − φ)\n"),
+        "{out}"
+    );
     assert!(out.contains("\n    V        = ε cos(θ − φ)\n"), "{out}");
     assert!(out.contains("\n    {p_θ, H} = ε sin(θ − φ)\n"), "{out}");
     let latex = run(&["expand", f, "V", "--format", "latex"], 0);
