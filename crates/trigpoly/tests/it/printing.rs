@@ -719,6 +719,54 @@ fn two_angles_print_as_harmonics_of_the_angles_jointly() {
     }
 }
 
+/// Three angles print as harmonics of the three jointly, the first nonzero multiple positive,
+/// and every notation reads back: `sin(−θ + φ − ψ) = −sin(θ − φ + ψ)`, and, worked by hand,
+/// `cos θ cos φ = (cos(θ + φ) + cos(θ − φ))/2` and `cos α sin ψ = (sin(α + ψ) − sin(α − ψ))/2`,
+/// so `4x cos θ cos φ sin ψ = x (sin(θ + φ + ψ) − sin(θ + φ − ψ) + sin(θ − φ + ψ) − sin(θ − φ −
+/// ψ))`; a Gaussian coefficient on `e^{i(θ − 2φ)}`, `(1 + 2i)(cos + i sin) = (1 + 2i) cos +
+/// (−2 + i) sin`.
+#[test]
+fn three_angles_print_as_harmonics_of_the_three_jointly() {
+    let vars = Vars::builder()
+        .coordinate("x")
+        .angle("theta")
+        .angle("phi")
+        .angle("psi")
+        .build()
+        .unwrap();
+    prints(
+        &vars,
+        "sin(-theta + phi - psi) + 2*cos(theta - phi + psi)",
+        [
+            "2 cos(θ − φ + ψ) − sin(θ − φ + ψ)",
+            r"2 \cos(\theta - \varphi + \psi) - \sin(\theta - \varphi + \psi)",
+            "2*cos(theta - phi + psi) - sin(theta - phi + psi)",
+        ],
+    );
+    let f: G = p(&vars, "4*x*cos(theta)*cos(phi)*sin(psi)");
+    let by_hand: G = p(
+        &vars,
+        "x*(sin(theta + phi + psi) - sin(theta + phi - psi) + sin(theta - phi + psi) \
+         - sin(theta - phi - psi))",
+    );
+    assert_eq!(f, by_hand);
+    assert_eq!(
+        f.to_ascii(),
+        "x*sin(theta + phi + psi) + x*sin(theta - phi + psi) - x*sin(theta - phi - psi) \
+         - x*sin(theta + phi - psi)"
+    );
+    let g: G = p(&vars, "(1 + 2*i)*exp(i*(theta - 2*phi))");
+    assert_eq!(
+        g.to_ascii(),
+        "(1 + 2*i)*cos(theta - 2*phi) + (-2 + i)*sin(theta - 2*phi)"
+    );
+    for h in [f, g] {
+        for text in [h.to_string(), h.to_latex(), h.to_ascii()] {
+            assert_eq!(p::<GaussianRational>(&vars, &text), h, "{text}");
+        }
+    }
+}
+
 /// A name before parentheses is a product, as the paper and the claims' echo write it
 /// (`Mω(3x p_x² − …)`, `i(mω − nΩ)`): it reads back as one; a name that is no product of
 /// declared names is still an unknown function.
