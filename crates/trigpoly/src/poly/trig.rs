@@ -610,6 +610,13 @@ pub struct TrigMonomial {
     pub powers: Vec<(u32, u32)>,
     /// In harmonics of several angles, the angles (by their place among the angles, in
     /// order) whose multiple the argument subtracts: `φ` in `cos(θ − φ)`. Empty otherwise.
+    ///
+    /// A sign beside `powers`, not a type of its own: the harmonic form already reads
+    /// `powers` as the sizes of the multiples (`(k, 0)` in `cos(kθ …)`, `(0, k)` in `sin`),
+    /// and the printer groups, orders and writes terms by their trigonometric part in either
+    /// form of the angles alike; a type (or a variant) for the harmonic form would change
+    /// every reading of `powers` there, and [`Poly::harmonic_terms`]' public terms, for one
+    /// bit per angle.
     pub minus: Vec<usize>,
 }
 
