@@ -430,7 +430,7 @@ fn ranks<T, K: Ord>(items: &[T], key: impl Fn(&T) -> K) -> Vec<u32> {
 
 /// [`TrigMonomial`]'s order as a key (computed once per trigonometric monomial when terms
 /// are sorted).
-type TrigKey = (u32, Vec<(u32, u32)>, Vec<usize>);
+type TrigKey = (u32, Vec<(u32, u32)>, Vec<bool>);
 
 /// Distinct vectors numbered in the order they come: a vector is copied once, when it is new.
 struct Numbering<T> {
@@ -603,7 +603,8 @@ fn euler_powers(multiples: &[i64]) -> TrigTables {
 
 /// A product `Π cos^a θ sin^b θ` over the angles of a variable set, in their order, or in
 /// harmonics `cos kθ`, `sin kθ`, or over several angles jointly `cos(kθ − lφ)`
-/// ([`Poly::harmonic_terms`]); ordered for printing: fewer factors first, cosines before sines.
+/// ([`Poly::harmonic_terms`]); ordered for printing: fewer factors first, cosines before sines,
+/// sums before differences (`cos(θ + φ − ψ)` before `cos(θ − φ + ψ)`).
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct TrigMonomial {
     /// `(a, b)` per angle.
@@ -647,7 +648,12 @@ impl TrigMonomial {
     fn sort_key(&self) -> TrigKey {
         let degree = self.powers.iter().map(|&(a, b)| a + b).sum();
         let powers = self.powers.iter().map(|&(a, b)| (b, a)).collect();
-        (degree, powers, self.minus.clone())
+        // Per angle whether it is subtracted, so `θ + φ + ψ`, `θ + φ − ψ`, `θ − φ + ψ`,
+        // `θ − φ − ψ`, as one counts in binary.
+        let minus = (0..self.powers.len())
+            .map(|a| self.minus.contains(&a))
+            .collect();
+        (degree, powers, minus)
     }
 }
 

@@ -723,8 +723,8 @@ fn two_angles_print_as_harmonics_of_the_angles_jointly() {
 /// and every notation reads back: `sin(−θ + φ − ψ) = −sin(θ − φ + ψ)`, and, worked by hand,
 /// `cos θ cos φ = (cos(θ + φ) + cos(θ − φ))/2` and `cos α sin ψ = (sin(α + ψ) − sin(α − ψ))/2`,
 /// so `4x cos θ cos φ sin ψ = x (sin(θ + φ + ψ) − sin(θ + φ − ψ) + sin(θ − φ + ψ) − sin(θ − φ −
-/// ψ))`; a Gaussian coefficient on `e^{i(θ − 2φ)}`, `(1 + 2i)(cos + i sin) = (1 + 2i) cos +
-/// (−2 + i) sin`.
+/// ψ))`, printed in that order, the signs counted in binary; a Gaussian coefficient on
+/// `e^{i(θ − 2φ)}`, `(1 + 2i)(cos + i sin) = (1 + 2i) cos + (−2 + i) sin`.
 #[test]
 fn three_angles_print_as_harmonics_of_the_three_jointly() {
     let vars = Vars::builder()
@@ -752,8 +752,8 @@ fn three_angles_print_as_harmonics_of_the_three_jointly() {
     assert_eq!(f, by_hand);
     assert_eq!(
         f.to_ascii(),
-        "x*sin(theta + phi + psi) + x*sin(theta - phi + psi) - x*sin(theta - phi - psi) \
-         - x*sin(theta + phi - psi)"
+        "x*sin(theta + phi + psi) - x*sin(theta + phi - psi) + x*sin(theta - phi + psi) \
+         - x*sin(theta - phi - psi)"
     );
     let g: G = p(&vars, "(1 + 2*i)*exp(i*(theta - 2*phi))");
     assert_eq!(
