@@ -855,9 +855,10 @@ impl Parser<'_> {
         let call = if self.tok.tok == Tok::LParen {
             self.call(name, span)?
         } else {
-            // `cos 2θ`, `\cos 2\theta`: a multiple of an angle, as the printers write one.
+            // `cos 2θ`, `\cos 2\theta`: a multiple of an angle, as the printers write one;
+            // after a power too, `sin²2θ = (sin 2θ)²`, as physics writes a mixing angle's.
             let multiple = match &self.tok.tok {
-                Tok::Int(n) if power.is_none() => {
+                Tok::Int(n) => {
                     let k = Expr::new(ExprKind::Integer(n.clone()), self.tok.span);
                     self.bump()?;
                     Some(k)
@@ -893,7 +894,7 @@ impl Parser<'_> {
             // LaTeX reads `\cos^2\theta^3`: neither is guessed.
             if matches!(self.tok.tok, Tok::Sup { .. } | Tok::Caret) {
                 // `sin 2θ^2`: the multiple is part of the angle that the power may raise, and
-                // the square is not advised as `sin²2θ`, which reads as no multiple.
+                // the square is advised only for a bare angle (`sin²θ`, `sin(θ)^2`).
                 let angle = multiple.as_ref().map_or(arg_span, |k| k.span.to(arg_span));
                 let unpowered = power.is_none() && multiple.is_none();
                 return Err(self.power_of_bare_angle(span, angle, unpowered));

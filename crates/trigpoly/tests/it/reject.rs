@@ -1386,3 +1386,24 @@ fn a_multiple_angle_without_parentheses_is_read_or_refused_as_written() {
     // The power the message writes first parses, to the square of `sin 2θ`.
     assert_eq!(read("(sin 2θ)^2"), read("sin(2*theta)^2"));
 }
+
+/// A power written between the function and a multiple of an angle, `sin²2θ`, as physics writes
+/// a mixing angle's, reads as the power of `sin 2θ` (it was refused as "expected an angle or
+/// '('"): `sin²2θ = (1 − cos 4θ)/2`, by hand; a power after it is still refused as ambiguous.
+#[test]
+fn a_power_of_a_multiple_angle_reads_as_physics_writes_it() {
+    let vars = phase_space();
+    let read = |src: &str| Poly::<GaussianRational>::parse(&vars, src);
+    for src in ["sin²2θ", "sin² 2θ", "sin² 2 theta", "\\sin^{2} 2\\theta"] {
+        assert_eq!(read(src), read("sin(2*theta)^2"), "{src}");
+        assert_eq!(read(src), read("(1 - cos(4*theta))/2"), "{src}");
+    }
+    assert_eq!(read("cos³3θ"), read("cos(3*theta)^3"));
+    let err = read("sin²2θ^3").expect_err("sin²2θ^3");
+    assert!(err.message().contains("ambiguous"), "{}", err.message());
+    let err = read("cos² 2/3θ").expect_err("cos² 2/3θ");
+    assert_eq!(
+        err.message(),
+        "expected an angle after 'cos² 2', as in cos 2θ"
+    );
+}
