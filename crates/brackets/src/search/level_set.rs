@@ -596,11 +596,28 @@ pub struct SharedVariable {
     pub polynomial: String,
     /// The variable shared, as printed.
     pub variable: String,
-    /// The relation that holds it, in words (`the negative power 1/x² of H`).
-    pub relation: String,
-    /// Whether that relation is the negative powers that a Laurent space admits (`--laurent`),
-    /// which a search without it does not take.
-    pub laurent: bool,
+    /// The relation that holds it.
+    pub relation: SharedRelation,
+}
+
+/// What holds a variable of a level set's polynomial ([`SharedVariable`]), each part as
+/// printed.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum SharedRelation {
+    /// A declared denominator.
+    Denominator(String),
+    /// The radicand of a radical.
+    Radicand {
+        /// The radicand.
+        radicand: String,
+        /// The radical.
+        radical: String,
+    },
+    /// A negative power of the variable in `H` (`1/x²`).
+    NegativePowerOfH(String),
+    /// The negative powers of a coordinate that a Laurent space admits (`--laurent`), which a
+    /// search without it does not take.
+    LaurentSpace,
 }
 
 impl SharedVariable {
@@ -612,30 +629,30 @@ impl SharedVariable {
         let space = system.space();
         let h = system.hamiltonian();
         // The relation, in words, and whether it is the Laurent space's.
-        let relation = |v: Var| -> Option<(String, bool)> {
+        let relation = |v: Var| -> Option<SharedRelation> {
             let name = vars.variable(v).unicode();
             if let Some((_, d)) = space
                 .denominator_atoms()
                 .iter()
                 .find(|(_, d)| d.contains(v))
             {
-                return Some((format!("the denominator {d}"), false));
+                return Some(SharedRelation::Denominator(d.to_string()));
             }
             if let Some((r, radicand)) = space.radicals().iter().find(|(_, d)| d.contains(v)) {
-                let r = vars.variable(*r).unicode();
-                return Some((format!("the radicand {radicand} of the radical {r}"), false));
+                return Some(SharedRelation::Radicand {
+                    radicand: radicand.to_string(),
+                    radical: vars.variable(*r).unicode().to_string(),
+                });
             }
             if let Some((lowest, _)) = h.exponent_range(v).filter(|(lo, _)| *lo < 0) {
                 let mut exponents = vec![0; vars.len()];
                 exponents[v.index()] = lowest;
                 let power = Expr::from_terms(vars, [(Rational::one().into(), exponents)])
                     .map_or_else(|_| format!("{name}^{lowest}"), |m| m.to_string());
-                return Some((format!("the negative power {power} of H"), false));
+                return Some(SharedRelation::NegativePowerOfH(power));
             }
-            (laurent && vars.variable(v).kind() == VarKind::Coordinate).then(|| {
-                let powers = format!("the negative powers of {name} that a Laurent space admits");
-                (powers, true)
-            })
+            (laurent && vars.variable(v).kind() == VarKind::Coordinate)
+                .then_some(SharedRelation::LaurentSpace)
         };
         let order = LevelSet::order(system);
         order
@@ -643,11 +660,10 @@ impl SharedVariable {
             .iter()
             .filter(|&&v| p.contains(v))
             .find_map(|&v| {
-                relation(v).map(|(relation, laurent)| SharedVariable {
+                relation(v).map(|relation| SharedVariable {
                     polynomial: p.to_string(),
                     variable: vars.variable(v).unicode().to_string(),
                     relation,
-                    laurent,
                 })
             })
     }
@@ -655,20 +671,35 @@ impl SharedVariable {
 
 impl std::fmt::Display for SharedVariable {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let (polynomial, variable) = (&self.polynomial, &self.variable);
         write!(
             f,
-            "the level set's polynomial P = {} shares {} with {}: the remainders on division \
-             by P are the normal forms modulo P and the system's relations only where no \
-             declared denominator, radicand or negative power holds a variable of P; {}",
-            self.polynomial,
-            self.variable,
-            self.relation,
-            match self.laurent {
-                true =>
+            "the level set's polynomial P = {polynomial} shares {variable} with "
+        )?;
+        match &self.relation {
+            SharedRelation::Denominator(d) => write!(f, "the denominator {d}")?,
+            SharedRelation::Radicand { radicand, radical } => {
+                write!(f, "the radicand {radicand} of the radical {radical}")?
+            }
+            SharedRelation::NegativePowerOfH(power) => {
+                write!(f, "the negative power {power} of H")?
+            }
+            SharedRelation::LaurentSpace => write!(
+                f,
+                "the negative powers of {variable} that a Laurent space admits"
+            )?,
+        }
+        write!(
+            f,
+            ": the remainders on division by P are the normal forms modulo P and the system's \
+             relations only where no declared denominator, radicand or negative power holds a \
+             variable of P; {}",
+            match self.relation {
+                SharedRelation::LaurentSpace =>
                     "take a level set of variables that no negative power involves (a \
-                         Laurent space admits them of every coordinate), or search without \
-                         --laurent",
-                false => "take a level set of variables that none of them holds",
+                     Laurent space admits them of every coordinate), or search without \
+                     --laurent",
+                _ => "take a level set of variables that none of them holds",
             }
         )
     }

@@ -111,7 +111,9 @@ pub use exceptional::{
     level_set_graph_variable, BasisGenerators, Candidates, DenominatorRoot, Determinants,
     ExceptionalValue, ExceptionalValues, RuledOut, MAX_RANK_MINORS, SEARCH_RANK_MINORS,
 };
-pub use level_set::{BesideLevelSet, LevelProof, LevelReduction, LevelSet, SharedVariable};
+pub use level_set::{
+    BesideLevelSet, LevelProof, LevelReduction, LevelSet, SharedRelation, SharedVariable,
+};
 pub use options::{SearchOptions, SearchSpace, DEFAULT_MAX_MINOR, DEFAULT_MAX_PRODUCTS};
 pub(crate) use parameters::{check_parameters, off_vanishing_denominators};
 pub use parameters::{fix_parameters, GENERIC_VALUES};
