@@ -599,3 +599,49 @@ fn a_search_on_a_level_set_whose_value_holds_a_denominator_of_parameters() {
         "{stderr}"
     );
 }
+
+/// A rotor whose radical `r = √(κ + 3)` holds a parameter alone: a number at fixed values.
+const RADICAL_ROTOR: &str = r#"name = "rotor with a radical of parameters"
+hamiltonian = "(p_x^2 + p_y^2)/2 + (x^2 + y^2)/2 + p_theta^2/2"
+[phase_space]
+coordinates = ["x", "y"]
+angles = ["theta"]
+parameters = ["kappa"]
+radicals = { r = "kappa + 3" }
+"#;
+
+/// A normal form is in the space when each of its monomials is one of the space's, a radical
+/// of parameters alone taken as a coefficient: on `p_θ = 1/r` at `κ = 1` the normal form of
+/// `p_θ/r` is `1/r² = 1/(κ + 3) = 1/4` (by hand), the constant `1` of the space, and no note
+/// says it leaves the space (it did). On `x² + y² + p_x² + p_y² = 1/r`, whose leading monomial
+/// is `x²`, the normal form of `x²` is `1/r − y² − p_x² − p_y²` (by hand), of momenta degree 2
+/// past the space's 1: that note stays.
+#[test]
+fn a_normal_form_with_a_radical_of_parameters_lies_in_the_space() {
+    let path = scratch_text("level-sets-relations", "radical-rotor.toml", RADICAL_ROTOR);
+    let run = |on: &str, positions: &str| {
+        superint_json(&[
+            "search",
+            path.to_str().unwrap(),
+            "--on",
+            on,
+            "--fix",
+            "kappa=1",
+            "--momenta-degree",
+            "1",
+            "--positions-degree",
+            positions,
+            "--trig-degree",
+            "1",
+        ])
+    };
+    let outside =
+        |json: &serde_json::Value| json["searches"][0]["level_set"]["normal_form_outside"].clone();
+    let inside = run("p_theta = 1/r", "1");
+    assert!(outside(&inside).is_null(), "{}", outside(&inside));
+    let energy = run("x^2 + y^2 + p_x^2 + p_y^2 = 1/r", "2");
+    assert_eq!(
+        outside(&energy),
+        serde_json::json!({"function": "x^2", "normal_form": "-p_x^2 - p_y^2 - y^2 + 1/r"})
+    );
+}

@@ -552,7 +552,8 @@ impl Problem {
     /// The problem on the level set `level`: the unknowns whose monomial its leading monomial
     /// divides left out (each is a combination of lower ones modulo its polynomial), and the
     /// images taken modulo the polynomial; with how many unknowns were left out, and the first
-    /// of them whose normal form has a monomial the space has not, with that normal form (the
+    /// of them whose normal form has a monomial the space has not ([`Problem::spans_term`]: a
+    /// radical or denominator of parameters alone is a coefficient), with that normal form (the
     /// space's degree bounds, separate for momenta and positions say, are not closed under the
     /// division, and an integral of the space whose normal form leaves it is not found).
     pub(super) fn restricted_to(
@@ -566,12 +567,10 @@ impl Problem {
         self.unknowns.retain(|u| !level.leaves_out(&u.phase));
         self.slots = Problem::slots(&self.vars, &self.variables.angles, &self.unknowns)?;
         let mut outside = None;
+        let numbers = self.numbers_at_fixed_values()?;
         for function in left_out_functions.iter() {
             let normal_form = level.remainder(function)?;
-            if normal_form
-                .terms()
-                .any(|t| self.slots.get_term(&t).is_none())
-            {
+            if normal_form.terms().any(|t| !self.spans_term(&t, &numbers)) {
                 outside = Some(NormalFormOutside {
                     function: function.clone(),
                     normal_form,
@@ -581,6 +580,50 @@ impl Problem {
         }
         self.level = Some(level);
         Ok((self, left_out_functions.len(), outside))
+    }
+
+    /// The radicals and denominator atoms that are numbers at the fixed values (their radicand
+    /// or denominator holds only parameters, all fixed: `r = √(κ + 3)` is 2 at `κ = 1`), each
+    /// with whether it is a radical.
+    fn numbers_at_fixed_values(&self) -> Result<Vec<(Var, bool)>, EngineError> {
+        let mut numbers = Vec::new();
+        for (is_radical, of) in [
+            (true, Expr::radicals(&self.vars)?),
+            (false, Expr::denominator_atoms(&self.vars)?),
+        ] {
+            for (v, e) in of {
+                if fix_parameters(&e, &self.parameters)?.is_constant() {
+                    numbers.push((v, is_radical));
+                }
+            }
+        }
+        Ok(numbers)
+    }
+
+    /// Whether the term, at the fixed values, is a multiple of a monomial of the space: its
+    /// monomial is one, or is one once the factors that are `numbers` there are taken as
+    /// coefficients (`1/r² = 1/(κ + 3)` times `1`; an odd power of a radical `r` keeps `r` or
+    /// `1/r`, since `r^{2j+1} = (κ + 3)^j r`).
+    fn spans_term(&self, t: &Term<'_, GaussianRational>, numbers: &[(Var, bool)]) -> bool {
+        if self.slots.get_term(t).is_some() {
+            return true;
+        }
+        let mut exps = t.exponents();
+        let mut odd = Vec::new();
+        for &(v, is_radical) in numbers {
+            let e = &mut exps[v.index()];
+            if is_radical && *e % 2 != 0 {
+                odd.push(v.index());
+            }
+            *e = 0;
+        }
+        // Each odd power of a radical as `r` or as `1/r`.
+        (0..1usize << odd.len()).any(|signs| {
+            for (bit, &i) in odd.iter().enumerate() {
+                exps[i] = if signs >> bit & 1 == 0 { 1 } else { -1 };
+            }
+            self.slots.get(&exps).is_some()
+        })
     }
 
     /// The unknown as a function.
