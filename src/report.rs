@@ -359,6 +359,9 @@ pub struct SearchFacts {
     /// Those of [`SearchFacts::left_out`] that the condition sets to a function of the other
     /// phase variables (`M3` at `M3 = −(M1γ1 + M2γ2)/γ3`), not to a constant.
     pub left_out_as_functions: Vec<String>,
+    /// The declared denominators that the condition gives a value (`κ + 1` at `κ = 1/2`),
+    /// whose powers the space leaves out, as the file writes them.
+    pub valued_denominators: Vec<String>,
     /// The parameters and the condition.
     pub parameters: ParameterFacts,
     /// The linear system: unknowns, equations, independent blocks, unknowns of the largest.

@@ -235,13 +235,9 @@ struct SpaceExponents {
 /// The note that the denominator `atoms` holding fixed parameters alone are numbers in the
 /// linear algebra, so that their powers add no unknown; empty where none does.
 fn numbers_at_fixed_values(r: &SearchResult, atoms: &[Var]) -> String {
-    let fixed = |v: Var| r.parameters.iter().any(|(p, _)| *p == v);
-    let defined = Expr::denominator_atoms(&r.vars).unwrap_or_default();
-    let numbers: Vec<String> = (defined.iter())
-        .filter(|(atom, d)| {
-            atoms.contains(atom) && r.vars.vars().all(|v| !d.contains(v) || fixed(v))
-        })
-        .map(|(atom, _)| format!("`{}`", r.vars.variable(*atom).unicode()))
+    let numbers: Vec<String> = (denominator_numbers(r).into_iter())
+        .filter(|atom| atoms.contains(atom))
+        .map(|atom| format!("`{}`", r.vars.variable(atom).unicode()))
         .collect();
     match numbers.len() {
         0 => String::new(),
@@ -255,6 +251,17 @@ fn numbers_at_fixed_values(r: &SearchResult, atoms: &[Var]) -> String {
             agreeing(numbers.len(), "it adds", "they add"),
         ),
     }
+}
+
+/// The denominator atoms that hold fixed parameters alone: numbers in the linear algebra
+/// (`κ + 1` at `κ = 1` is 2).
+fn denominator_numbers(r: &SearchResult) -> Vec<Var> {
+    let fixed = |v: Var| r.parameters.iter().any(|(p, _)| *p == v);
+    let defined = Expr::denominator_atoms(&r.vars).unwrap_or_default();
+    (defined.into_iter())
+        .filter(|(_, d)| r.vars.vars().all(|v| !d.contains(v) || fixed(v)))
+        .map(|(atom, _)| atom)
+        .collect()
 }
 
 impl SpaceExponents {
@@ -437,13 +444,16 @@ fn denominators_in_space(r: &SearchResult) -> impl Iterator<Item = Var> + '_ {
 }
 
 /// With denominators or radicals, the note that a monomial equal as a function to a sum of
-/// simpler ones is left out.
+/// simpler ones is left out; of the denominators, only where one of the space's is no number
+/// at the fixed values (`κ + 1` at `κ = 1` only multiplies, as a coefficient does).
 fn dependent_monomials_text(r: &SearchResult) -> String {
     let first_radical = trigpoly::Expr::radicals(&r.vars)
         .ok()
         .and_then(|radicals| radicals.into_iter().next())
         .filter(|_| r.space.radicals_degree > 0);
-    match (denominators_in_space(r).next().is_none(), first_radical) {
+    let numbers = denominator_numbers(r);
+    let functions = denominators_in_space(r).any(|atom| !numbers.contains(&atom));
+    match (!functions, first_radical) {
         (true, None) => String::new(),
         (false, _) => " (with denominators the monomials are not independent, \
                         `x/(x − y) − y/(x − y) = 1`: each one equal as a function to a sum of \
@@ -1298,6 +1308,7 @@ impl Shared {
             angles: names_of(&r.variables.angles),
             left_out: names_of(&r.variables.left_out),
             left_out_as_functions: names_of(&r.variables.left_out_as_functions),
+            valued_denominators: names_of(&r.variables.valued_denominators),
             parameters: parameter_facts(
                 vars,
                 &r.parameters,

@@ -109,7 +109,9 @@
 //!   "searches": [ { "section", "space": { "momenta_degree", "positions_degree", "trig_degree",
 //!                   "laurent", "coordinates", "momenta", "angles", "left_out",
 //!                   "left_out_as_functions" (of "left_out", those the condition sets to a
-//!                   function of the others, not to a constant), "poisson_degree", "poisson_variables", "denominators_degree",
+//!                   function of the others, not to a constant), "valued_denominators" (the
+//!                   declared denominators the condition gives a value, their powers left
+//!                   out), "poisson_degree", "poisson_variables", "denominators_degree",
 //!                   "radicals_degree" },
 //!                   "parameters", "unknowns", "equations", "blocks", "largest_block",
 //!                   "dimension", "functional_rank": int | null (of the basis: as for
@@ -601,6 +603,7 @@ fn search(f: &SearchFacts, section: u32) -> Value {
             "angles": f.angles,
             "left_out": f.left_out,
             "left_out_as_functions": f.left_out_as_functions,
+            "valued_denominators": f.valued_denominators,
             "poisson_degree": s.poisson_degree,
             "poisson_variables": f.poisson,
             "denominators_degree": s.denominators_degree,

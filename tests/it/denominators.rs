@@ -933,6 +933,60 @@ fn found(report: &str) -> Vec<String> {
     lines
 }
 
+/// What a search's space says of [`RESONANT_AT_HALF`]'s denominator `κ + 1`: at `--fix
+/// kappa=1` it is the number 2, which only multiplies, so the note that with denominators the
+/// monomials are not independent (`x/(x − y) − y/(x − y) = 1`) is not true there and is not
+/// said (it was), the note that it is a number is; beside a denominator of coordinates,
+/// `x − y`, the note is true and stays. Under `--when kappa=1/2` the condition gives it a
+/// value, its powers are left out, and the JSON names it among `valued_denominators`.
+#[test]
+fn denominators_a_number_at_the_fixed_values_makes_no_monomials_dependent() {
+    let dependent = "with denominators the monomials are not independent";
+    let space = |text: &str, options: &[&str]| -> String {
+        let f = scratch_text("denominators-numbers", "t.toml", text);
+        let args = [
+            &["search", f.to_str().unwrap()][..],
+            options,
+            &["--momenta-degree", "1", "--positions-degree", "1"],
+        ]
+        .concat();
+        let report = crate::normalize(&superint_ok(&args));
+        let from = report.find("The space:").expect("a space");
+        let to = from + report[from..].find("blocks").expect("its blocks");
+        report[from..to].to_string()
+    };
+    let number = space(RESONANT_AT_HALF, &["--fix", "kappa=1"]);
+    assert!(!number.contains(dependent), "{number}");
+    assert!(
+        number.contains("(numbers at the parameters' fixed values below, so they add no unknown)"),
+        "{number}"
+    );
+    let mixed = RESONANT_AT_HALF.replace("[\"kappa + 1\"]", "[\"kappa + 1\", \"x - y\"]");
+    let both = space(&mixed, &["--fix", "kappa=1"]);
+    assert!(both.contains(dependent), "{both}");
+    assert!(
+        both.contains("(κ + 1) a number at the parameters' fixed values"),
+        "{both}"
+    );
+    let f = scratch_text("denominators-numbers", "t.toml", RESONANT_AT_HALF);
+    let valued = |options: &[&str]| {
+        let args = [&["search", f.to_str().unwrap()][..], options].concat();
+        superint_json(
+            &[
+                &args[..],
+                &["--momenta-degree", "1", "--positions-degree", "1"],
+            ]
+            .concat(),
+        )["searches"][0]["space"]["valued_denominators"]
+            .clone()
+    };
+    assert_eq!(
+        valued(&["--when", "kappa = 1/2"]),
+        serde_json::json!(["(kappa + 1)"])
+    );
+    assert_eq!(valued(&["--fix", "kappa=1"]), serde_json::json!([]));
+}
+
 /// A search under a condition on a declared denominator's parameter searches at its value:
 /// `1/(κ + 1)` at `κ = 1/2` finds what the same system with `2/3` written in its place finds
 /// (its cubic integral of the 1 : 2 resonance among them), the same space and the same
