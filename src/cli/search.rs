@@ -285,17 +285,17 @@ fn refuse_beside_level_set(options: &SearchOptions) -> anyhow::Result<()> {
 }
 
 /// The level set `text` of `--on`, `EXPR = VALUE`, read and checked
-/// ([`brackets::search::LevelSet::check`], at the values `fixed`; with the parameter
+/// ([`brackets::search::LevelSet::check`], at the fixed values of `options`; with the parameter
 /// `searched_for` by `--find-values` free, `LevelSet::check_for_values_of`; in a Laurent
-/// space where `laurent`): each refusal placed in `text` as a condition's is,
+/// space where its space is one): each refusal placed in `text` as a condition's is,
 /// `<command line>:1:C:` with a caret, at the part it is about.
 fn level_set(
     subject: &Subject,
     text: &str,
-    fixed: &[(trigpoly::Var, trigpoly::Rational)],
+    options: &SearchOptions,
     searched_for: Option<trigpoly::Var>,
-    laurent: bool,
 ) -> anyhow::Result<brackets::search::LevelSet> {
+    let (fixed, laurent) = (&options.fixed, options.space.laurent);
     let refuse = |span: std::ops::Range<usize>, message: String| -> anyhow::Error {
         let error = FileError::at(ErrorKind::Condition, COMMAND_LINE, text, span, message);
         named("--on", error)
@@ -769,14 +769,7 @@ fn search(a: &SearchArgs, subject: &Subject, output: &Output) -> anyhow::Result<
         let searched_for = (a.find_values.as_deref())
             .and_then(|name| subject.system().vars().lookup(name.trim()))
             .filter(|&v| subject.system().vars().variable(v).kind() == VarKind::Parameter);
-        let laurent = options.space.laurent;
-        options.on = Some(level_set(
-            subject,
-            on,
-            &options.fixed,
-            searched_for,
-            laurent,
-        )?);
+        options.on = Some(level_set(subject, on, &options, searched_for)?);
     }
     if let Some(names) = &a.find_values {
         options.max_minor = usize::try_from(a.max_minor).unwrap_or(usize::MAX);

@@ -380,10 +380,12 @@ impl LevelSet {
         let dividing = self.division_order(system);
         let invalid = |m: String| Err(EngineError::Invalid(m));
         let p = || self.polynomial();
-        if let Some((side, v)) =
-            (sides.iter()).find_map(|s| negative_power(s, &dividing).map(|v| (s, v)))
-        {
-            let v = vars_name(side, v);
+        // The name of a variable of `P` that `e` holds to a negative power, if any.
+        let negative = |e: &Expr| negative_power(e, &dividing).map(|v| vars_name(e, v));
+        // The two refusals differ past their first words: a side's negative power goes with
+        // a multiple of both sides, an input's (a function the claim is computed from) with
+        // another level set.
+        if let Some((side, v)) = (sides.iter()).find_map(|s| negative(s).map(|v| (s, v))) {
             return invalid(format!(
                 "the side {} has a negative power of {v}: a claim on a level set is decided by \
                  dividing lhs − rhs by P = {}, which takes polynomials in P's variables, and the \
@@ -393,10 +395,7 @@ impl LevelSet {
                 p()?
             ));
         }
-        if let Some((input, v)) =
-            (inputs.iter()).find_map(|i| negative_power(&i.value, &dividing).map(|v| (i, v)))
-        {
-            let v = vars_name(&input.value, v);
+        if let Some((input, v)) = (inputs.iter()).find_map(|i| negative(&i.value).map(|v| (i, v))) {
             let what = match &input.via {
                 Some(via) => format!("the claim's {via} is computed from {}, which", input.what),
                 None => input.what.clone(),
