@@ -366,6 +366,28 @@ fn what_find_values_does_not_take_is_refused() {
     );
 }
 
+/// A condition that sets to 0 a parameter `H` divides by (`x²y/m` at `m = 0`) is refused as an
+/// ordinary search refuses it, naming the condition, and a value fixed for the parameter solved
+/// for with the refusal of `--find-values`: both said "division by zero" when `H` under the
+/// condition was formed before them.
+#[test]
+fn a_condition_that_zeroes_a_parameter_h_divides_by_is_refused_by_name() {
+    let file = scratch_text(
+        "exceptional-values",
+        "divides-by-m.toml",
+        "name = \"m\"\nhamiltonian = \"(p_x^2 + p_y^2)/2 + a*x^2/2 + x^2*y/m\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\", \"m\"]\n",
+    );
+    let refused = |extra: &[&str]| superint_refused(&values_of_a(&file, extra));
+    let zero = refused(&["--when", "m=0"]);
+    assert!(
+        zero.contains("the condition sets m = 0, but the Hamiltonian divides by m"),
+        "{zero}"
+    );
+    let fixed = refused(&["--when", "m=0", "--fix", "a=1"]);
+    assert!(fixed.contains("a value fixed for a"), "{fixed}");
+}
+
 /// A block whose minor passes `--max-minor` (the largest of Hénon–Heiles' blocks at
 /// A = B = 1 has 30 rows) stops with exit code 2, the limit's message and the hint naming
 /// the flag; the default lets it through.

@@ -588,7 +588,7 @@ pub fn exceptional_candidates(
     options: &SearchOptions,
     parameter: Var,
 ) -> Result<Candidates, EngineError> {
-    let searched = refuse(system, options, parameter)?;
+    refuse(system, options, parameter)?;
     let problem = problem_with_parameter_kept(system, options, parameter)?;
     // The denominators that hold the parameter, in parameters alone ([`refuse`]), are cleared
     // row by row as its negative powers are ([`PolyMatrix::new`]); the others here.
@@ -651,6 +651,10 @@ pub fn exceptional_candidates(
     // With a negative power of `t` in H, `t = 0` is no value of H: not a candidate; nor is a
     // root of a declared denominator in `t` that H or the space's functions divide by (a
     // search there has no value for them), irrational ones divided out of the rest.
+    // `H` under the condition is formed here, after the search's own checks: where the
+    // condition sets to 0 a parameter `H` divides by, the substitution fails unnamed, and
+    // those checks name the condition.
+    let searched = searched_hamiltonian(system, options)?;
     let no_value_at_zero = (searched.terms().into_iter()).any(|term| term.exponent(parameter) < 0);
     let zero_left_out = no_value_at_zero && roots.iter().any(Rational::is_zero);
     if no_value_at_zero {
@@ -754,10 +758,8 @@ fn searched_hamiltonian(system: &System, options: &SearchOptions) -> Result<Expr
     }
 }
 
-/// Refuses what [`exceptional_values`] does not take; else `H` as the search takes it
-/// ([`searched_hamiltonian`], formed once here, where the condition's values of the
-/// denominators are checked first).
-fn refuse(system: &System, options: &SearchOptions, parameter: Var) -> Result<Expr, EngineError> {
+/// Refuses what [`exceptional_values`] does not take.
+fn refuse(system: &System, options: &SearchOptions, parameter: Var) -> Result<(), EngineError> {
     let vars = system.vars();
     if !vars.owns(parameter) || vars.variable(parameter).kind() != VarKind::Parameter {
         return Err(EngineError::Invalid(
@@ -767,7 +769,6 @@ fn refuse(system: &System, options: &SearchOptions, parameter: Var) -> Result<Ex
     if let Some(c) = &options.condition {
         c.values_denominators()?;
     }
-    let searched = searched_hamiltonian(system, options)?;
     let name = vars.variable(parameter).name();
     let space = system.space();
     // Held by H as written (a condition that sets the parameter is refused below, for that),
@@ -781,7 +782,7 @@ fn refuse(system: &System, options: &SearchOptions, parameter: Var) -> Result<Ex
             || symbol_holds(space.denominator_atoms())
             || symbol_holds(space.radicals())
     };
-    let held = holds(system.hamiltonian()) || holds(&searched);
+    let held = holds(system.hamiltonian()) || holds(&searched_hamiltonian(system, options)?);
     let refusal = if !held {
         Some(format!("{name}, which H does not hold"))
     } else if !options.symbolic.is_empty() {
@@ -833,7 +834,7 @@ fn refuse(system: &System, options: &SearchOptions, parameter: Var) -> Result<Ex
         Some(what) => Err(EngineError::Invalid(format!(
             "the search for the exceptional values of {name} does not take {what}"
         ))),
-        None => Ok(searched),
+        None => Ok(()),
     }
 }
 
