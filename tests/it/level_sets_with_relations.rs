@@ -615,12 +615,14 @@ radicals = { r = "kappa + 3" }
 /// `p_θ/r` is `1/r² = 1/(κ + 3) = 1/4` (by hand), the constant `1` of the space, and no note
 /// says it leaves the space (it did). On `x² + y² + p_x² + p_y² = 1/r`, whose leading monomial
 /// is `x²`, the normal form of `x²` is `1/r − y² − p_x² − p_y²` (by hand), of momenta degree 2
-/// past the space's 1: that note stays.
+/// past the space's 1: that note stays. An odd power is the radical, not a number: on
+/// `p_θ = r³` the normal form of `p_θ` is `r³ = (κ + 3) r` (by hand), in the space that holds
+/// `r` and outside the one of `--radicals-degree 0`, which the note says.
 #[test]
 fn a_normal_form_with_a_radical_of_parameters_lies_in_the_space() {
     let path = scratch_text("level-sets-relations", "radical-rotor.toml", RADICAL_ROTOR);
-    let run = |on: &str, positions: &str| {
-        superint_json(&[
+    let run_with = |on: &str, positions: &str, extra: &[&str]| {
+        let args = [
             "search",
             path.to_str().unwrap(),
             "--on",
@@ -633,8 +635,10 @@ fn a_normal_form_with_a_radical_of_parameters_lies_in_the_space() {
             positions,
             "--trig-degree",
             "1",
-        ])
+        ];
+        superint_json(&[&args[..], extra].concat())
     };
+    let run = |on: &str, positions: &str| run_with(on, positions, &[]);
     let outside =
         |json: &serde_json::Value| json["searches"][0]["level_set"]["normal_form_outside"].clone();
     let inside = run("p_theta = 1/r", "1");
@@ -643,5 +647,12 @@ fn a_normal_form_with_a_radical_of_parameters_lies_in_the_space() {
     assert_eq!(
         outside(&energy),
         serde_json::json!({"function": "x^2", "normal_form": "-p_x^2 - p_y^2 - y^2 + 1/r"})
+    );
+    let cube = run("p_theta = r^3", "1");
+    assert!(outside(&cube).is_null(), "{}", outside(&cube));
+    let without_r = run_with("p_theta = r^3", "1", &["--radicals-degree", "0"]);
+    assert_eq!(
+        outside(&without_r),
+        serde_json::json!({"function": "p_theta", "normal_form": "r^3"})
     );
 }

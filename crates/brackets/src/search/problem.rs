@@ -553,7 +553,8 @@ impl Problem {
     /// divides left out (each is a combination of lower ones modulo its polynomial), and the
     /// images taken modulo the polynomial; with how many unknowns were left out, and the first
     /// of them whose normal form has a monomial the space has not ([`Problem::spans_term`]: a
-    /// radical or denominator of parameters alone is a coefficient), with that normal form (the
+    /// denominator of parameters alone, and an even power of a radical of them, is a number at
+    /// the fixed values; an odd power is that radical), with that normal form (the
     /// space's degree bounds, separate for momenta and positions say, are not closed under the
     /// division, and an integral of the space whose normal form leaves it is not found).
     pub(super) fn restricted_to(
