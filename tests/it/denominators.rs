@@ -873,8 +873,9 @@ fn denominators_shifted_resonance_divides_by_one_plus_kappa_for_every_kappa() {
     );
 }
 
-/// A condition where a declared denominator in parameters alone is 0 is refused at the value,
-/// naming the denominator and the condition.
+/// A condition where a declared denominator in parameters alone is 0 is refused where a claim
+/// divides by it (`(2 + κ)/(1 + κ)`, not the claims before, free of it), naming the denominator
+/// and the condition.
 #[test]
 fn denominators_a_condition_where_one_plus_kappa_is_zero_is_refused() {
     let at_minus_one = GYROSCOPIC_WITH_ONE_PLUS_KAPPA.replace("kappa = 1/2", "kappa = -1");
@@ -882,7 +883,7 @@ fn denominators_a_condition_where_one_plus_kappa_is_zero_is_refused() {
     let err = superint_refused(&["check", f.to_str().unwrap()]);
     assert!(
         err.contains(
-            "pole.toml:26:17: at κ = −1 the denominator κ + 1 is 0, so what divides by it has \
+            "pole.toml:29:9: at κ = −1 the denominator κ + 1 is 0, so what divides by it has \
              no value there: give κ a value where κ + 1 is not 0, or leave it free"
         ),
         "{err}"
@@ -893,13 +894,46 @@ fn denominators_a_condition_where_one_plus_kappa_is_zero_is_refused() {
         GYROSCOPIC_WITH_ONE_PLUS_KAPPA,
     );
     let f = f.to_str().unwrap();
-    let err = superint_refused(&["bracket", f, "Z", "H", "--when", "kappa = -1"]);
+    let err = superint_refused(&["bracket", f, "Z/(1 + kappa)", "H", "--when", "kappa = -1"]);
     assert!(
         err.contains("at κ = −1 the denominator κ + 1 is 0"),
         "{err}"
     );
     let out = superint_ok(&["bracket", f, "1/(1 + kappa)", "H", "--when", "kappa = 1/2"]);
     assert!(out.contains("= 0"), "{out}");
+}
+
+/// A claim that does not divide by a declared denominator takes a condition where it is 0, as
+/// a resonant integral beside one that divides by `ω² − Ω²` does: at `κ = −1` the Hamiltonian
+/// `p_x²/2 + (κ + 1)x + p_t` is the free particle's, whose `x − p_x t` is an integral (by hand,
+/// `d/dt (x − p_x t) = p_x − p_x − ṗ_x t = (κ + 1)t`), while a claim that divides by `κ + 1` is
+/// still refused there, naming the denominator.
+#[test]
+fn denominators_a_condition_where_one_is_zero_is_refused_only_where_held() {
+    let system = "name = \"t\"\nhamiltonian = \"p_x^2/2 + (kappa + 1)*x + p_t\"\n\
+        [phase_space]\ncoordinates = [\"x\", \"t\"]\nparameters = [\"kappa\"]\n\
+        denominators = [\"kappa + 1\"]\n\
+        [[claim]]\nid = \"free\"\nclaim = \"{x - p_x*t, H} = 0\"\nwhen = \"kappa = -1\"\n\
+        [[claim]]\nid = \"falling\"\nclaim = \"{x - p_x*t, H} = (kappa + 1)*t\"\n";
+    let f = scratch_text("denominators-zero-unheld", "t.toml", system);
+    check_says(
+        &f,
+        &[
+            "[free proved]",
+            "[falling proved]",
+            "2 claims in 1 file: 2 proved, 0 refuted",
+        ],
+    );
+    let held = format!(
+        "{system}[[claim]]\nid = \"held\"\nclaim = \"x/(kappa + 1) = 0\"\n\
+         when = \"kappa = -1\"\n"
+    );
+    let f = scratch_text("denominators-zero-unheld", "held.toml", &held);
+    let err = superint_refused(&["check", f.to_str().unwrap()]);
+    assert!(
+        err.contains("at κ = −1 the denominator κ + 1 is 0, so what divides by it has no value"),
+        "{err}"
+    );
 }
 
 /// The oscillator `(p_x² + p_y²)/2 + x²/2 + 3y²/(κ + 1)` with the denominator `κ + 1`, and the

@@ -32,7 +32,7 @@ pub struct Condition {
     /// does, not where nothing divides by it.
     unvalued: Vec<Unvalued>,
     /// Why the condition cannot be applied at all, where [`Condition::new`] (which returns no
-    /// error) met a denominator it sets that holds a phase variable or is zero at it:
+    /// error) met a denominator it sets that holds a phase variable:
     /// [`Condition::apply`] refuses with it, the variable set and the message.
     refusal: Option<(Var, String)>,
 }
@@ -474,7 +474,7 @@ impl Condition {
 
     /// Refuses the condition wherever it is applied: where it sets a variable a radicand
     /// involves ([`Condition::keeps_radicands`]), and where [`Condition::new`] met a
-    /// denominator it sets that holds a phase variable or is zero at it.
+    /// denominator it sets that holds a phase variable.
     fn applicable(&self) -> Result<(), EngineError> {
         self.keeps_radicands()?;
         match &self.refusal {
@@ -720,9 +720,9 @@ impl Condition {
 /// value at the condition, a nonzero number or a polynomial that division by the declared
 /// denominators reaches (`(κ + 1)` is `3/2` at `κ = 1/2`, so `1/(κ + 1)` is `2/3`). Refused
 /// ([`EngineError::RefusedCondition`], naming the variable set) where `D` holds a phase
-/// variable ([`Condition::sets_a_denominator`]) and where it is zero at the condition (what
-/// divides by it has no value there). Where division does not reach its value, or the value
-/// divides by a denominator, the atom is `unvalued`, refused only where held.
+/// variable ([`Condition::sets_a_denominator`]). Where it is zero at the condition (what
+/// divides by it has no value there), where division does not reach its value, or where the
+/// value divides by a denominator, the atom is `unvalued`, refused only where held.
 fn denominator_values(text: &str, subs: &[(Var, Expr)]) -> Result<DenominatorValues, EngineError> {
     let Some((_, first)) = subs.first() else {
         return Ok(DenominatorValues::default());
@@ -740,14 +740,15 @@ fn denominator_values(text: &str, subs: &[(Var, Expr)]) -> Result<DenominatorVal
         }
         let name = vars.variable(v).unicode();
         let at = d.subst_many(subs)?;
+        // What divides by a denominator zero at the condition has no value there; what does
+        // not (the resonant integral beside the one off resonance) takes the condition.
         if at.vanishes()? {
-            return Err(refused(
-                v,
-                format!(
-                    "at {text} the denominator {d} is 0, so what divides by it has no value \
-                     there: give {name} a value where {d} is not 0, or leave it free"
-                ),
-            ));
+            let why = format!(
+                "at {text} the denominator {d} is 0, so what divides by it has no value \
+                 there: give {name} a value where {d} is not 0, or leave it free"
+            );
+            values.unvalued.push(Unvalued { atom, set: v, why });
+            continue;
         }
         // The atom stands for `D`, its negative powers for `1/D^k`: it takes `D`'s value,
         // whose inverse division must reach.
