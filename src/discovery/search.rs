@@ -467,7 +467,8 @@ fn dependent_monomials_text(r: &SearchResult) -> String {
     }
 }
 
-/// The sentence that an angle's momentum that the condition fixes is left out of the space
+/// The sentence that an angle's momentum (or a cyclic coordinate's) that the condition fixes
+/// is left out of the space
 /// (so is a Poisson variable it fixes), or nothing; of one it sets to a function of the others
 /// (`M3 = −(M1 γ1 + M2 γ2)/γ3`), that they are the variables of the surface it describes.
 fn left_out_text(r: &SearchResult) -> String {

@@ -235,6 +235,7 @@ mod micz_kepler;
 mod poisson;
 mod radicals;
 mod system_files;
+mod time_dependent;
 
 /// The search space of degree 1 in the momenta and the positions and trigonometric order 1.
 pub const DEGREE_ONE: [&str; 6] = [

@@ -176,7 +176,7 @@ pub(super) fn canonical(k: impl IntoIterator<Item = i64>) -> bool {
 }
 
 /// The variables of the space: the coordinates and the angles, and the momenta and Poisson
-/// variables but those that the condition fixes, which are left out.
+/// variables but those that the condition fixes and the flow keeps, which are left out.
 fn space_variables(system: &System, condition: Option<&[(Var, Expr)]>) -> SpaceVariables {
     let vars = system.vars();
     let pairs = system.space().pairs();
@@ -188,7 +188,9 @@ fn space_variables(system: &System, condition: Option<&[(Var, Expr)]>) -> SpaceV
             .collect()
     };
     // An angle's momentum that the condition fixes (`p_θ = mIω/n`) is a constant there:
-    // every function of it is an integral, so it is left out, and so is a Poisson variable
+    // every function of it is an integral, so it is left out, and so is the momentum of a
+    // coordinate that `H` does not involve (the time's `p_t` in extended phase space, whose
+    // `K = H + p_t` keeps it), and a Poisson variable
     // that the condition fixes (the flow keeps it, or the condition is refused). Any other
     // momentum counts. One set to a function of other phase variables (`M₃ = −(M₁γ₁ +
     // M₂γ₂)/γ₃`) is left out too, the others parametrising the surface, but is no constant.
@@ -200,8 +202,10 @@ fn space_variables(system: &System, condition: Option<&[(Var, Expr)]>) -> SpaceV
     };
     let fixed = |v: Var| value(v).is_some();
     let (mut momenta, mut left_out) = (Vec::new(), Vec::new());
+    let hamiltonian = system.hamiltonian();
     for pair in pairs {
-        if vars.variable(pair.q).kind() == VarKind::Angle && fixed(pair.p) {
+        let kept = vars.variable(pair.q).kind() == VarKind::Angle || !hamiltonian.contains(pair.q);
+        if kept && fixed(pair.p) {
             left_out.push(pair.p);
         } else {
             momenta.push(pair.p);

@@ -365,7 +365,8 @@ pub struct SpaceVariables {
     pub poisson: Vec<Var>,
     /// The angles, whose trigonometric order is bounded.
     pub angles: Vec<Var>,
-    /// The angles' momenta and the Poisson variables that the condition fixes, left out.
+    /// The momenta that the condition fixes and the flow keeps (an angle's, or a coordinate's that `H`
+    /// does not involve) and the Poisson variables that the condition fixes, left out.
     pub left_out: Vec<Var>,
     /// Those of `left_out` that the condition sets to a function of other phase variables,
     /// not to a constant (`M₃ = −(M₁γ₁ + M₂γ₂)/γ₃`, the level set of e(3)*'s area integral
