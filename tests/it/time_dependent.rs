@@ -49,3 +49,44 @@ fn a_fixed_p_t_is_left_out_and_the_boost_is_found() {
         "{out}"
     );
 }
+
+/// `check` of the file: every claim as expected, the counts those of the file's claims.
+#[test]
+fn the_driven_oscillator_claims_are_as_expected() {
+    let out = superint_ok(&["check", "systems/driven-oscillator.toml"]);
+    assert!(
+        out.contains("14 claims in 1 file: 8 proved, 6 refuted; all as expected"),
+        "{out}"
+    );
+}
+
+/// Off the resonance (`M = 1`, `ω = 3`, `Ω = 1`, `f = 8`, so `f/(ω² − Ω²) = 1`) the search
+/// finds the file's hand-derived `X` and `P` as elements (restated by them exactly), and
+/// `p_t`, `p_ψ` are left out.
+#[test]
+fn off_the_resonance_the_search_finds_the_driven_integrals() {
+    let out = superint_ok(&[
+        "search",
+        "systems/driven-oscillator.toml",
+        "--when",
+        "M = 1, omega = 3, Omega = 1, f = 8, p_psi = 0, p_t = 0",
+        "--momenta-degree",
+        "1",
+        "--positions-degree",
+        "1",
+        "--trig-degree",
+        "2",
+    ]);
+    assert!(out.contains("p_t, p_ψ are left out"), "{out}");
+    assert!(
+        out.contains("Dimension of the space of integrals: 4."),
+        "{out}"
+    );
+    // By hand: P = p_x cos ψ + 3x sin ψ + sin φ cos ψ − 3 cos φ sin ψ, and
+    // sin φ cos ψ − 3 cos φ sin ψ = −sin(φ + ψ) + 2 sin(φ − ψ).
+    assert!(
+        out.contains("p_x cos ψ + 3x sin ψ − sin(φ + ψ) + 2 sin(φ − ψ)\n       = P"),
+        "{out}"
+    );
+    assert!(out.contains("= −X"), "{out}");
+}
