@@ -2,7 +2,7 @@
 //! `p_t`, `K = H + p_t`, and clock angles `φ = Ωt` with `K = H + Ω p_φ`
 //! (`systems/driven-oscillator.toml`, docs/system-files.md's "Time-dependent systems").
 
-use crate::{scratch_text, superint_ok};
+use crate::{scratch_text, superint_ok, superint_refused};
 
 /// Free fall in extended phase space, `K = p_x²/2 + gx + p_t`.
 const FREE_FALL: &str = "name = \"free fall\"\nhamiltonian = \"p_x^2/2 + g*x + p_t\"\n\
@@ -50,6 +50,26 @@ fn a_fixed_p_t_is_left_out_and_the_boost_is_found() {
     );
 }
 
+/// The driven oscillator at the resonance `Ω = ω` (`M = ω = 1`, `f = 2`): a search whose space
+/// holds no denominator runs there, though the file's off-resonance integrals divide by
+/// `ω² − Ω²`, and finds the resonant integral with its secular term, derived by hand in the
+/// file (`P_res = 2ω p_x cos φ + 2Mω²x sin φ − f sin φ cos φ − fωt`, here
+/// `2p_x cos φ + 2x sin φ − sin 2φ − 2t`); a space that holds the denominator is refused.
+#[test]
+fn at_the_resonance_a_search_without_denominators_finds_the_secular_integral() {
+    let resonance = driven_search("M = 1, omega = 1, Omega = 1, f = 2, p_psi = 0, p_t = 0");
+    let out = superint_ok(&[&resonance[..], &["--denominators-degree", "0"]].concat());
+    assert!(
+        out.contains("I4 = −2t + 2 p_x cos φ + 2x sin φ − sin 2φ"),
+        "{out}"
+    );
+    let err = superint_refused(&resonance);
+    assert!(
+        err.contains("the denominator ω² − Ω² is 0, so what divides by it has no value there"),
+        "{err}"
+    );
+}
+
 /// `check` of the file: every claim as expected, the counts those of the file's claims.
 #[test]
 fn the_driven_oscillator_claims_are_as_expected() {
@@ -65,18 +85,9 @@ fn the_driven_oscillator_claims_are_as_expected() {
 /// `p_t`, `p_ψ` are left out.
 #[test]
 fn off_the_resonance_the_search_finds_the_driven_integrals() {
-    let out = superint_ok(&[
-        "search",
-        "systems/driven-oscillator.toml",
-        "--when",
+    let out = superint_ok(&driven_search(
         "M = 1, omega = 3, Omega = 1, f = 8, p_psi = 0, p_t = 0",
-        "--momenta-degree",
-        "1",
-        "--positions-degree",
-        "1",
-        "--trig-degree",
-        "2",
-    ]);
+    ));
     assert!(out.contains("p_t, p_ψ are left out"), "{out}");
     assert!(
         out.contains("Dimension of the space of integrals: 4."),
@@ -89,4 +100,21 @@ fn off_the_resonance_the_search_finds_the_driven_integrals() {
         "{out}"
     );
     assert!(out.contains("= −X"), "{out}");
+}
+
+/// The search of the driven oscillator's integrals of degree 1 in `p_x` and in the
+/// positions, of trigonometric order 2 (products of the clocks), at the condition `when`.
+fn driven_search(when: &str) -> [&str; 10] {
+    [
+        "search",
+        "systems/driven-oscillator.toml",
+        "--when",
+        when,
+        "--momenta-degree",
+        "1",
+        "--positions-degree",
+        "1",
+        "--trig-degree",
+        "2",
+    ]
 }

@@ -445,8 +445,8 @@ impl Condition {
     /// The substitution [`Condition::apply`] makes: [`Condition::subs`], then the values the
     /// condition gives the declared denominators whose polynomial, in parameters alone, holds
     /// a parameter it sets (the atom of `κ + 1` to `3/2` at `κ = 1/2`). A caller that
-    /// substitutes it itself (a search) refuses first what [`Condition::values_denominators`]
-    /// refuses.
+    /// substitutes it itself (a search whose space holds them) refuses first what
+    /// [`Condition::values_denominators`] refuses.
     pub fn substitution(&self) -> Cow<'_, [(Var, Expr)]> {
         match self.denominators.is_empty() {
             true => Cow::Borrowed(&self.subs),
@@ -470,6 +470,15 @@ impl Condition {
             Some(u) => Err(refused(u.set, u.why.clone())),
             None => Ok(()),
         }
+    }
+
+    /// Refuses the condition for a use that substitutes it into what divides by no declared
+    /// denominator but where `e` does (a search whose space holds none, `e` its `H`): what
+    /// [`Condition::apply`] refuses of any expression, and a denominator the condition gives no
+    /// value where `e` holds it.
+    pub fn values_denominators_of(&self, e: &Expr) -> Result<(), EngineError> {
+        self.applicable()?;
+        self.takes_its_denominators(e)
     }
 
     /// Refuses the condition wherever it is applied: where it sets a variable a radicand

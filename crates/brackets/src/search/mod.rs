@@ -306,8 +306,13 @@ fn fixed_search_problem(
     }
     if let Some(c) = condition {
         // The search substitutes the condition's values of the declared denominators too,
-        // into a space that may hold any of them.
-        c.values_denominators()?;
+        // into a space that may hold any of them; one without them (denominators degree 0)
+        // refuses a denominator without a value only where `H` holds it, as a claim does (a
+        // driven oscillator at its resonance, beside a function over `ω² − Ω²`).
+        match options.space.denominators_degree {
+            0 => c.values_denominators_of(system.hamiltonian())?,
+            _ => c.values_denominators()?,
+        }
         c.kept_by_flow(system)?;
         c.defined_on(&[system.hamiltonian()], "the Hamiltonian")?;
     }
