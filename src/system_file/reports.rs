@@ -292,6 +292,13 @@ pub fn bracket_report(
         .map_err(|e| file.computation_error(&e))?;
     let lhs = format!("{{{fname}, {gname}}}");
     let mut equations = equations_at(file, condition.as_ref(), when, vec![(lhs.clone(), value)])?;
+    // The bracket of functions that have no value under the condition has none, even where
+    // the bracket is free of what they divide by (`{F, p_φ}` of `F = x/(ω² − Ω²)` at `Ω = ω`).
+    if let Some(c) = &condition {
+        (c.defined_on(&[&fe], &fname))
+            .and_then(|()| c.defined_on(&[&ge], &gname))
+            .map_err(|e| file.error_under(when, &e))?;
+    }
     // A bracket at a surface the flow of H leaves may vanish there and still conserve nothing.
     let zero = equations.lines.iter().all(|l| l.rhs.is_zero());
     equations.flow = condition.as_ref().map(|c| flow_kept(file, c, zero));

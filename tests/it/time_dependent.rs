@@ -118,3 +118,65 @@ fn driven_search(when: &str) -> [&str; 10] {
         "2",
     ]
 }
+
+/// An oscillator driven at `Ω` with `ω² − Ω²` declared, `F = x/(ω² − Ω²)`.
+const OVER_D: &str = "name = \"d\"\n\
+    hamiltonian = \"p_x^2/2 + omega^2*x^2/2 + Omega*p_phi - f*x*cos(phi)\"\n\
+    [phase_space]\ncoordinates = [\"x\"]\nangles = [\"phi\"]\n\
+    parameters = [\"omega\", \"Omega\", \"f\"]\ndenominators = [\"omega^2 - Omega^2\"]\n\
+    [[function]]\nname = \"F\"\nvalue = \"x/(omega^2 - Omega^2)\"\n";
+
+/// At `Ω = ω`, where `ω² − Ω²` is 0, nothing that divides by it has a value, so no claim that
+/// does is proved or refuted, even where what the claim computes is free of it: `{F, p_φ}`
+/// (0, but `F` divides), both sides alike (`x/D = x/D`), sides whose difference is `1`, a
+/// rank whose function cancels its `F`, a bracket with an `H` over `D`, and the `bracket`
+/// command of `F`. Each is refused, naming what divides by it; a claim free of `D` is checked.
+#[test]
+fn at_a_zero_denominator_whatever_divides_by_it_is_refused() {
+    let claim =
+        |c: &str| format!("[[claim]]\nid = \"c\"\nclaim = \"{c}\"\nwhen = \"Omega = omega\"\n");
+    let over_h = OVER_D.replace(
+        "p_x^2/2 + omega^2*x^2/2",
+        "p_x^2/2 + x^2/(omega^2 - Omega^2)",
+    );
+    let cases = [
+        (OVER_D, "{F, p_phi} = 0", "the function F divides by it"),
+        (
+            OVER_D,
+            "x/(omega^2 - Omega^2) = x/(omega^2 - Omega^2)",
+            "the claim divides by it",
+        ),
+        (
+            OVER_D,
+            "x/(omega^2 - Omega^2) + 1 = x/(omega^2 - Omega^2)",
+            "the claim divides by it",
+        ),
+        (OVER_D, "rank(F - F + p_phi) = 1", "F divides by it"),
+        (&over_h, "{p_phi, H} = 0", "divides by it"),
+    ];
+    for (system, c, what) in cases {
+        let f = scratch_text(
+            "time-dependent",
+            "zero-denominator.toml",
+            &format!("{system}{}", claim(c)),
+        );
+        let err = superint_refused(&["check", f.to_str().unwrap()]);
+        assert!(
+            err.contains(
+                "at Ω = ω the denominator ω² − Ω² is 0, so what divides by it has no value"
+            ) && err.contains(what),
+            "{c}: {err}"
+        );
+    }
+    let f = scratch_text("time-dependent", "zero-denominator.toml", OVER_D);
+    let f = f.to_str().unwrap();
+    let err = superint_refused(&["bracket", f, "F", "p_phi", "--when", "Omega = omega"]);
+    assert!(
+        err.contains("the denominator ω² − Ω² is 0") && err.contains("(F divides by it)"),
+        "{err}"
+    );
+    let free = format!("{OVER_D}{}", claim("{x, p_x} = 1"));
+    let f = scratch_text("time-dependent", "zero-denominator-free.toml", &free);
+    let out = superint_ok(&["check", f.to_str().unwrap()]);
+    assert!(out.contains("1 proved, 0 refuted"), "{out}");
+}

@@ -660,14 +660,19 @@ impl Condition {
         self.apply(e)
     }
 
-    /// Refuses the condition where it sets to zero a variable that one of `sides` divides by:
-    /// there the sides have no value, even when their difference is zero before the
+    /// Refuses the condition where it sets to zero a variable that one of `sides` divides by,
+    /// or where one of them holds a declared denominator it gives no value (`1/(ω² − Ω²)` at
+    /// `Ω = ω`): there the sides have no value, even when their difference is zero before the
     /// substitution (`p_x/M = p_x/M` at `M = 0`). `what` names the sides in the message (`the
     /// claim`). The refusal is an [`EngineError::RefusedCondition`] naming that variable, so
     /// that a caller holding the condition's text shows it at the variable's value there.
     pub fn defined_on(&self, sides: &[&Expr], what: &str) -> Result<(), EngineError> {
         for side in sides {
             self.within(side.vars())?;
+        }
+        let held = |u: &&Unvalued| sides.iter().any(|side| side.contains(u.atom));
+        if let Some(u) = self.unvalued.iter().find(held) {
+            return Err(refused(u.set, format!("{} ({what} divides by it)", u.why)));
         }
         let divisor = sides.iter().find_map(|side| {
             Condition::sets_a_divisor_to_zero(&self.subs, side).map(|v| (v, side.vars()))
