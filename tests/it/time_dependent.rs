@@ -180,3 +180,30 @@ fn at_a_zero_denominator_whatever_divides_by_it_is_refused() {
     let out = superint_ok(&["check", f.to_str().unwrap()]);
     assert!(out.contains("1 proved, 0 refuted"), "{out}");
 }
+
+/// `--new-only` at the resonance with no denominator in the space: a given known integral
+/// over `ω² − Ω²` has no value there and is refused so (not as no integral, as `X` was: its
+/// bracket with the atom kept is not 0, nor one that is `X_res` over it, found an integral
+/// with the atom kept); the file's `X`, `P` over it are no known integrals there.
+#[test]
+fn at_the_resonance_a_known_integral_over_the_zero_denominator_is_refused() {
+    let resonance = driven_search("M = 1, omega = 1, Omega = 1, f = 2, p_psi = 0, p_t = 0");
+    let new_only = [
+        &resonance[..],
+        &["--denominators-degree", "0", "--new-only"],
+    ]
+    .concat();
+    for known in ["X", "Xres/(omega^2 - Omega^2)"] {
+        let err = superint_refused(&[&new_only[..], &["--known", known]].concat());
+        assert!(
+            err.contains("has no value where it is searched: at ")
+                && err.contains("the denominator ω² − Ω² is 0"),
+            "{known}: {err}"
+        );
+    }
+    let out = superint_ok(&new_only);
+    assert!(
+        out.contains("Known integrals in the space: X_res, P_res."),
+        "{out}"
+    );
+}

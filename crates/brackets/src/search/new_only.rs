@@ -3,6 +3,7 @@
 
 use trigpoly::{Expr, GaussianRational, Rational, Style, Term, Var, VarKind, Vars};
 
+use crate::claim::Condition;
 use crate::clearing::refuse_division_by_zero;
 use crate::error::{EngineError, EngineLimit};
 use crate::modular::{self, sum_by_index, CombinationSums, Echelon, Field, Fp, SparseVec};
@@ -645,6 +646,17 @@ pub(super) fn refuse_given_known(
             }
             checked => checked?,
         }
+        // Nor where the condition makes one it divides by 0 (`1/(ω² − Ω²)` at `Ω = ω`).
+        if let Some(c) = &options.condition {
+            match c.values_denominators_of(f) {
+                Err(EngineError::RefusedCondition { message, .. }) => {
+                    return Err(refused(format!(
+                        "has no value where it is searched: {message}"
+                    )))
+                }
+                checked => checked?,
+            }
+        }
         let fixed = fix_parameters(f, parameters)?;
         if let Some(level) = on {
             let flow = at.flow(system, &fixed)?;
@@ -696,7 +708,9 @@ fn known_integrals(
         .iter()
         .map(|(name, f)| (name.clone(), f.clone(), true));
     for (name, f, given) in named.chain(given) {
-        if !given && !f.is_real() {
+        // A function of the system with no value under the condition is none of them.
+        let valued = |c: &Condition| c.values_denominators_of(&f).is_ok();
+        if !given && (!f.is_real() || !options.condition.iter().all(valued)) {
             continue;
         }
         let fv = fix_parameters(&f, parameters)?;
