@@ -1223,6 +1223,14 @@ fn denominators_a_condition_is_refused_only_where_a_denominator_it_cannot_value_
         err.contains("used.toml:9:9: at k = 1/2 the denominator k + m is m + 1/2, and cannot"),
         "{err}"
     );
+    // Beside the declaration, the two ways out a user who set `k` for a claim would take.
+    assert!(
+        err.contains(
+            "; or give k a value where k + m is a number, a single term or a product of \
+             declared denominators, or leave it free"
+        ),
+        "{err}"
+    );
     let f = f.to_str().unwrap();
     let err = superint_refused(&["expand", f, "x", "--when", "k = 1/2, x = 1/(k + m)"]);
     assert!(err.contains("the denominator k + m is m + 1/2"), "{err}");

@@ -780,7 +780,11 @@ fn denominator_values(text: &str, subs: &[(Var, Expr)]) -> Result<DenominatorVal
                  {name} a value where {d} is a number, a single term or a product of declared \
                  denominators, or leave it free"
             ),
-            (None, Err(e)) => format!("at {text} the denominator {d} is {at}, and {e}"),
+            (None, Err(e)) => format!(
+                "at {text} the denominator {d} is {at}, and {e}; or give {name} a value where \
+                 {d} is a number, a single term or a product of declared denominators, or leave \
+                 it free"
+            ),
         };
         values.unvalued.push(Unvalued { atom, set: v, why });
     }
