@@ -2,7 +2,7 @@
 //! `p_t`, `K = H + p_t`, and clock angles `φ = Ωt` with `K = H + Ω p_φ`
 //! (`systems/driven-oscillator.toml`, docs/system-files.md's "Time-dependent systems").
 
-use crate::{scratch_text, superint_ok, superint_refused};
+use crate::{scratch_text, superint_json, superint_ok, superint_refused};
 
 /// Free fall in extended phase space, `K = p_x²/2 + gx + p_t`.
 const FREE_FALL: &str = "name = \"free fall\"\nhamiltonian = \"p_x^2/2 + g*x + p_t\"\n\
@@ -67,6 +67,48 @@ fn at_the_resonance_a_search_without_denominators_finds_the_secular_integral() {
     assert!(
         err.contains("the denominator ω² − Ω² is 0, so what divides by it has no value there"),
         "{err}"
+    );
+}
+
+/// `--find-values Omega` finds the resonance from `H` alone: at `ω = 1` (and `M = f = 1`) the
+/// generic `Ω` has the four integrals of the driven oscillator, `Ω = ±1` seven (the clocks'
+/// phase `cos(φ ∓ ψ)`, `sin(φ ∓ ψ)` and the secular integrals), `Ω = 0` eight (the stopped
+/// clock's `cos φ`, `sin φ`), and every root of the determinants is rational. At `Ω = 1` the
+/// secular integral is, by hand, `2 P_res` of the file at `M = ω = f = 1`:
+/// `2(2p_x cos φ + 2x sin φ − sin φ cos φ − t) = −2t + 4p_x cos φ + 4x sin φ − sin 2φ`.
+#[test]
+fn find_values_finds_the_resonance_from_h_alone() {
+    let search = [
+        &driven_search("p_psi = 0, p_t = 0")[..],
+        &["--find-values", "Omega", "--fix", "omega=1,M=1,f=1"],
+        &["--denominators-degree", "0"],
+    ]
+    .concat();
+    let json = superint_json(&search);
+    let found = &json["exceptional_values"][0];
+    assert_eq!(found["generic"]["dimension"], 4);
+    let values: Vec<(&str, u64)> = found["values"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| {
+            (
+                v["value"].as_str().unwrap(),
+                v["dimension"].as_u64().unwrap(),
+            )
+        })
+        .collect();
+    assert_eq!(values, [("-1", 7), ("0", 8), ("1", 7)]);
+    assert_eq!(found["ruled_out_roots"], 0);
+    assert!(found["unexamined"].is_null());
+    let text = superint_ok(&search);
+    let at_one = text
+        .split("At Ω = 1: Basis")
+        .nth(1)
+        .expect("the search at Ω = 1");
+    assert!(
+        at_one.contains("= −2t + 4 p_x cos φ + 4x sin φ − sin 2φ"),
+        "{text}"
     );
 }
 
