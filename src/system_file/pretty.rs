@@ -4,6 +4,8 @@
 
 use std::convert::Infallible;
 
+use num_bigint::{BigInt, Sign};
+
 use trigpoly::superscript;
 use trigpoly::syntax::{Expr as Tree, ExprKind, LEFT_DEEP_SUM};
 
@@ -424,16 +426,16 @@ impl LoadedSystem {
             },
             _ => None,
         };
-        // `cos²θ`: the exponent on the function of a bare angle, as the paper writes it.
+        // `cos²θ`, `sin²2θ`: the exponent on the function of a bare angle, as the paper
+        // writes it (and the parser reads `sin²2θ` as `(sin 2θ)²`).
         let trig_of_angle = match &a.kind {
-            ExprKind::Call(f, _, args) if f == "cos" || f == "sin" => match &args[..] {
-                [arg] if matches!(arg.kind, ExprKind::Name(_)) => base.text.split_once(' '),
-                _ => None,
-            },
+            ExprKind::Call(f, _, args) if bare_angle(f, args).is_some() => {
+                base.text.split_once(' ')
+            }
             _ => None,
         };
         // Any other power of it takes the angle in parentheses: `cos θ⁻¹` and
-        // `cos θ^(3²)` would read as ambiguous.
+        // `cos θ^(3²)` would read as ambiguous, and so would `sin 2θ⁻¹`.
         let base_text = match trig_of_angle {
             Some((f, angle)) => format!("{f}({angle})"),
             None => base.text.clone(),
@@ -458,14 +460,13 @@ impl LoadedSystem {
 
     /// `f(args)`: `cos θ` of a bare angle, `Re` and `Im`, or a name that multiplies its parentheses.
     fn print_call(&self, f: &str, args: &[Tree]) -> Printed {
-        // `cos θ` of a bare angle, as the paper (and the normal form) writes it.
-        if let ([arg], "cos" | "sin") = (args, f) {
-            if let ExprKind::Name(angle) = &arg.kind {
-                let mut p = Printed::atom(format!("{f} {}", self.display_name(angle)));
-                p.first_long = true;
-                p.last_long = true;
-                return p;
-            }
+        // `cos θ` and `sin 2θ` of a bare angle, as the paper (and the normal form) writes them.
+        if let Some((multiple, angle)) = bare_angle(f, args) {
+            let multiple = multiple.map_or(String::new(), |k| k.to_string());
+            let mut p = Printed::atom(format!("{f} {multiple}{}", self.display_name(angle)));
+            p.first_long = true;
+            p.last_long = true;
+            return p;
         }
         // `e^{−inθ}`, as the paper writes the exponential (`exp(…)` where the system
         // declares a name `e`): a power, which another power or `Re` takes in parentheses.
@@ -524,14 +525,34 @@ fn is_letter(c: char) -> bool {
     c.is_alphabetic() || crate::render::tex::is_combining(c)
 }
 
-/// Whether `tree` is printed ending in `cos θ` or `sin θ` of a bare angle (`x cos θ`,
-/// `cos²θ`), which a `/` after it would seem to divide the angle of.
+/// The angle of `cos θ`, `sin 2θ`: of a sine or cosine `f` of `args` that is printed without
+/// parentheses, as the paper writes it and the parser reads it back, its one argument a name
+/// or an integer multiple of one (`2*theta`), as its multiple (if any) and name.
+fn bare_angle<'t>(f: &str, args: &'t [Tree]) -> Option<(Option<&'t BigInt>, &'t str)> {
+    if !matches!(f, "cos" | "sin") {
+        return None;
+    }
+    match args {
+        [arg] => match &arg.kind {
+            ExprKind::Name(angle) => Some((None, angle)),
+            // Not `−2θ`, which the parser reads after `sin` only in parentheses.
+            ExprKind::Mul(k, angle) => match (&k.kind, &angle.kind) {
+                (ExprKind::Integer(k), ExprKind::Name(angle)) if k.sign() != Sign::Minus => {
+                    Some((Some(k), angle))
+                }
+                _ => None,
+            },
+            _ => None,
+        },
+        _ => None,
+    }
+}
+
+/// Whether `tree` is printed ending in `cos θ` or `sin 2θ` of a bare angle ([`bare_angle`]:
+/// `x cos θ`, `cos²θ`), which a `/` after it would seem to divide the angle of.
 fn ends_in_bare_trig(tree: &Tree) -> bool {
     match &tree.kind {
-        ExprKind::Call(f, _, args) => {
-            matches!(f.as_str(), "cos" | "sin")
-                && matches!(&args[..], [arg] if matches!(arg.kind, ExprKind::Name(_)))
-        }
+        ExprKind::Call(f, _, args) => bare_angle(f, args).is_some(),
         ExprKind::Pow(a, b) => {
             matches!(b.kind, ExprKind::Integer(_))
                 && matches!(a.kind, ExprKind::Call(..))

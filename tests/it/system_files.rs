@@ -3945,6 +3945,88 @@ fn family_instances_before_parentheses_and_trigonometric_echoes() {
     assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
 }
 
+/// A sine or cosine of an integer multiple of a bare angle echoes as the paper and the normal
+/// form write it, `sin 2θ` (it echoed `sin(2θ)`), and is set apart as `sin θ` is: `cos²3θ` for
+/// its square (which reads as `(cos 3θ)²`), `(sin 2θ) x` and `(sin 2θ)/2` before a factor or a
+/// denominator, where `sin 2θ x` and `sin 2θ/2` would read as the sine of `2θx` and of
+/// `2θ/2`; a sum of angles, a negative multiple and any other power keep their parentheses.
+/// Each echo reads back: the expression minus its echo expands to 0, in text and in LaTeX.
+#[test]
+fn a_multiple_of_a_bare_angle_echoes_as_the_paper_writes_it() {
+    let dir = scratch("multiple-angle-echo");
+    std::fs::write(
+        dir.join("rotors.toml"),
+        "hamiltonian = \"p_x^2/2 + p_theta^2/2 + p_phi^2/2\"\n[phase_space]\n\
+         coordinates = [\"x\"]\nangles = [\"theta\", \"phi\"]\n",
+    )
+    .expect("write");
+    let cases = [
+        ("sin(2*theta)", "sin 2θ"),
+        ("cos(3*theta)^2", "cos²3θ"),
+        ("x*sin(2*theta)", "x sin 2θ"),
+        ("sin(2*theta)*x", "(sin 2θ) x"),
+        ("sin(2 theta)/2", "(sin 2θ)/2"),
+        ("x*cos(3*phi)/2", "(x cos 3φ)/2"),
+        ("sin(2*theta)*cos(3*phi)", "sin 2θ cos 3φ"),
+        ("cos(2*theta)*sin(theta)*x", "(cos 2θ sin θ) x"),
+        ("cos(2*theta - phi)", "cos(2θ − φ)"),
+        ("sin(-2*theta)", "sin(−2θ)"),
+        ("sin(2*theta)^(2^2)", "sin(2θ)^(2²)"),
+    ];
+    let exprs: Vec<&str> = cases.iter().map(|(e, _)| *e).collect();
+    let o = superint_in(
+        &dir,
+        &[&["expand", "rotors.toml"][..], &exprs, &["--no-timings"]].concat(),
+    );
+    let out = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{out}{}", text(&o.stderr));
+    let statements: Vec<&str> = out
+        .lines()
+        .filter_map(|l| l.split_once(" = "))
+        .map(|(lhs, _)| lhs.trim())
+        .filter(|lhs| !lhs.is_empty())
+        .collect();
+    let echoes: Vec<&str> = cases.iter().map(|(_, echo)| *echo).collect();
+    assert_eq!(statements, echoes, "{out}");
+    let differences: Vec<String> = cases
+        .iter()
+        .map(|(e, echo)| format!("{e} - ({echo})"))
+        .collect();
+    let differences: Vec<&str> = differences.iter().map(String::as_str).collect();
+    let o = superint_in(
+        &dir,
+        &[&["expand", "rotors.toml", "--"][..], &differences].concat(),
+    );
+    let out = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{out}{}", text(&o.stderr));
+    assert_eq!(out.matches(" = 0\n").count(), cases.len(), "{out}");
+    // LaTeX writes them so too, and reads them back.
+    let o = superint_in(
+        &dir,
+        &[
+            "expand",
+            "rotors.toml",
+            "cos(3*theta)^2 + sin(2*theta)*x",
+            "--format",
+            "latex",
+        ],
+    );
+    let latex = text(&o.stdout);
+    let echo = r"\cos^{2}3\theta + (\sin 2\theta) x";
+    assert!(latex.contains(&format!("{echo} &=")), "{latex}");
+    let difference = format!("cos(3*theta)^2 + sin(2*theta)*x - ({echo})");
+    let o = superint_in(
+        &dir,
+        &["expand", "rotors.toml", &difference, "--no-timings"],
+    );
+    assert!(
+        text(&o.stdout).contains(" = 0\n"),
+        "{}{}",
+        text(&o.stdout),
+        text(&o.stderr)
+    );
+}
+
 /// `bracket` takes expressions that begin with a minus sign as they are (they were refused as
 /// unknown options), and the options after them still count; `expand` takes them after `--`.
 #[test]
@@ -6042,7 +6124,7 @@ fn a_claims_echo_sets_a_sine_or_cosine_apart_from_a_factor_after_it() {
         "{cos θ, H} = (−sin θ) p_θ/I",
         "(cos θ) x = x cos θ",
         "(cos²θ) x p_x = x p_x cos²θ",
-        "sin θ cos θ = sin(2θ)/2",
+        "sin θ cos θ = (sin 2θ)/2",
         // The factor after it begins with a sine set apart, not with the sine.
         "(cos θ) (sin θ) x = x sin θ cos θ",
     ] {
