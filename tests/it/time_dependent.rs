@@ -112,6 +112,85 @@ fn find_values_finds_the_resonance_from_h_alone() {
     );
 }
 
+/// The values `--find-values Omega` finds, with the dimension and functional rank of the
+/// search at each, and the generic dimension and rank: what two routes to the same search
+/// must agree on.
+fn found_values(search: &[&str]) -> (Vec<(String, u64, u64)>, u64, u64) {
+    let json = superint_json(search);
+    let found = &json["exceptional_values"][0];
+    let at = |v: &serde_json::Value| {
+        (
+            v["dimension"].as_u64().unwrap(),
+            v["functional_rank"].as_u64().unwrap(),
+        )
+    };
+    let values = (found["values"].as_array().unwrap().iter())
+        .map(|v| (v["value"].as_str().unwrap().to_string(), at(v).0, at(v).1))
+        .collect();
+    let (dimension, rank) = at(&found["generic"]);
+    (values, dimension, rank)
+}
+
+/// `--when 'omega = 1, …'` is `--fix omega=1` for `--find-values Omega` in a space without
+/// the declared denominator: `ω² − Ω²`, `1 − Ω²` there, divides nothing searched (`H` does
+/// not hold it), so the condition is taken, and the values, their dimensions and functional
+/// ranks are those the `--fix` route finds (`Ω = ±1` seven, `Ω = 0` eight, generic four, as
+/// [`find_values_finds_the_resonance_from_h_alone`] checks by hand). With the denominator in
+/// the space the condition is refused, saying the way out, `--fix omega=1`; and a bracket of
+/// `X`, which divides by `ω² − Ω²`, stays refused at `ω = 1`: `1/(1 − Ω²)` is no division
+/// the engine takes for every `Ω`.
+#[test]
+fn find_values_takes_a_condition_that_sets_the_denominators_other_parameter() {
+    let degrees = ["--denominators-degree", "0"];
+    let fixed = [
+        &driven_search("p_psi = 0, p_t = 0")[..],
+        &["--find-values", "Omega", "--fix", "omega=1,M=1,f=1"],
+        &degrees,
+    ]
+    .concat();
+    let when = driven_search("omega = 1, p_psi = 0, p_t = 0");
+    let conditioned = [
+        &when[..],
+        &["--find-values", "Omega", "--fix", "M=1,f=1"],
+        &degrees,
+    ]
+    .concat();
+    let expected = |v: &str, d, r| (v.to_string(), d, r);
+    let found = found_values(&conditioned);
+    assert_eq!(
+        found.0,
+        [
+            expected("-1", 7, 3),
+            expected("0", 8, 4),
+            expected("1", 7, 3)
+        ]
+    );
+    assert_eq!(found, found_values(&fixed));
+    let err =
+        superint_refused(&[&when[..], &["--find-values", "Omega", "--fix", "M=1,f=1"]].concat());
+    assert!(
+        err.contains(
+            "the denominator ω² − Ω² is −Ω² + 1, and cannot divide by −Ω² + 1: only division"
+        ) && err.contains(
+            "or leave it free; with --find-values Omega, fix ω with --fix omega=1 in place of \
+             the condition's value"
+        ),
+        "{err}"
+    );
+    let err = superint_refused(&[
+        "bracket",
+        "systems/driven-oscillator.toml",
+        "X",
+        "H",
+        "--when",
+        "omega = 1",
+    ]);
+    assert!(
+        err.contains("the denominator ω² − Ω² is −Ω² + 1, and cannot divide by −Ω² + 1"),
+        "{err}"
+    );
+}
+
 /// `check` of the file: every claim as expected, the counts those of the file's claims.
 #[test]
 fn the_driven_oscillator_claims_are_as_expected() {

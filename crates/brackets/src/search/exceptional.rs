@@ -99,7 +99,7 @@ use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 use rayon::prelude::*;
 use rustc_hash::FxHashMap;
-use trigpoly::{Expr, Rational, Var, VarKind, Vars};
+use trigpoly::{Expr, Rational, Style, Var, VarKind, Vars};
 
 use crate::claim::Condition;
 use crate::error::{EngineError, EngineLimit};
@@ -111,8 +111,8 @@ use crate::univariate::{gcd_mod, is_square_free_mod, IntPoly, ResidueRing};
 
 use super::problem::{blocks, canonical, Problem};
 use super::{
-    fix_parameters, fixed_search_problem, refuse_beside_level_set, search, FixedSearch, OnLevel,
-    SearchOptions, SearchResult,
+    fix_parameters, fixed_search_problem, refuse_beside_level_set, refuse_unvalued_denominators,
+    search, FixedSearch, OnLevel, SearchOptions, SearchResult,
 };
 
 /// What [`exceptional_values`] found: what the determinants tell ([`Determinants`]), and the
@@ -766,8 +766,12 @@ fn refuse(system: &System, options: &SearchOptions, parameter: Var) -> Result<()
             "only a parameter's exceptional values are found".into(),
         ));
     }
+    // As the search at each value refuses it: `ω = 1` leaves `ω² − Ω²` at `1 − Ω²`, no value,
+    // which a space without declared denominators takes where `H` does not hold it; a
+    // parameter set to a number is then fixed instead, which gives it its value.
     if let Some(c) = &options.condition {
-        c.values_denominators()?;
+        refuse_unvalued_denominators(c, system, &options.space)
+            .map_err(|e| with_fix_in_place_of(e, c, parameter))?;
     }
     let name = vars.variable(parameter).name();
     let space = system.space();
@@ -836,6 +840,30 @@ fn refuse(system: &System, options: &SearchOptions, parameter: Var) -> Result<()
         ))),
         None => Ok(()),
     }
+}
+
+/// The refusal `e` of the condition `c` with the way out for the search for the exceptional
+/// values of `parameter` where `e` names a parameter `c` sets to a number: `--fix` in place of
+/// the condition's value, at which the declared denominators holding `parameter` are taken
+/// as polynomials in it (`--fix omega=1` makes `ω² − Ω²` the `1 − Ω²` that `ω = 1` leaves).
+fn with_fix_in_place_of(e: EngineError, c: &Condition, parameter: Var) -> EngineError {
+    let EngineError::RefusedCondition { var, message } = e else {
+        return e;
+    };
+    let value = c.subs().iter().find(|(v, _)| *v == var).map(|(_, x)| x);
+    let Some(value) = value.filter(|x| x.is_constant()) else {
+        return EngineError::RefusedCondition { var, message };
+    };
+    let vars = value.vars();
+    let (name, c_name) = (vars.variable(var), vars.variable(parameter).name());
+    let message = format!(
+        "{message}; with --find-values {c_name}, fix {} with --fix {}={} in place of the \
+         condition's value",
+        name.unicode(),
+        name.name(),
+        value.render(Style::Ascii)
+    );
+    EngineError::RefusedCondition { var, message }
 }
 
 /// `Σ a_i t^i` as an expression in the parameter `t`.

@@ -290,6 +290,21 @@ struct FixedSearch {
     on: Option<SearchedLevel>,
 }
 
+/// Refuses the condition `c` for a search in `space`, which substitutes the condition's values
+/// of the declared denominators too, into a space that may hold any of them: one without them
+/// (denominators degree 0) refuses a denominator without a value only where `H` holds it, as a
+/// claim does (a driven oscillator at its resonance, beside a function over `ω² − Ω²`).
+fn refuse_unvalued_denominators(
+    c: &Condition,
+    system: &System,
+    space: &SearchSpace,
+) -> Result<(), EngineError> {
+    match space.denominators_degree {
+        0 => c.values_denominators_of(system.hamiltonian()),
+        _ => c.values_denominators(),
+    }
+}
+
 /// The parameters' values for the linear algebra and the linear problem at those values,
 /// once what the search cannot answer is refused: a condition that the flow leaves, fixed or
 /// symbolic parameters that are no parameters of the system, what [`refuse_unreal`]
@@ -305,14 +320,7 @@ fn fixed_search_problem(
         level.check(system, &options.fixed, options.space.laurent)?;
     }
     if let Some(c) = condition {
-        // The search substitutes the condition's values of the declared denominators too,
-        // into a space that may hold any of them; one without them (denominators degree 0)
-        // refuses a denominator without a value only where `H` holds it, as a claim does (a
-        // driven oscillator at its resonance, beside a function over `ω² − Ω²`).
-        match options.space.denominators_degree {
-            0 => c.values_denominators_of(system.hamiltonian())?,
-            _ => c.values_denominators()?,
-        }
+        refuse_unvalued_denominators(c, system, &options.space)?;
         c.kept_by_flow(system)?;
         c.defined_on(&[system.hamiltonian()], "the Hamiltonian")?;
     }
